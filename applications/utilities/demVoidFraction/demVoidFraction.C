@@ -1,0 +1,93 @@
+/*---------------------------------------------------------------------------*\
+Application
+    demVoidFraction
+
+Description
+    Computes the void fraction field of a case from a LIGGGHTS text dump with
+    the model selected in constant/couplingProperties, writes "voidfraction"
+    into the time directory and prints the particle count, volumes, the
+    conservation error, min/max void fraction, the particles reaching
+    outside the mesh and the time per call.
+
+Usage
+    demVoidFraction -dump FILE [-model NAME] [-repeat N] [-case DIR] [-parallel]
+
+    -model overrides the dictionary's voidFractionModel; -repeat N calls the
+    model N more times after a warm-up and reports the median time per call.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "voidFractionModel.H"
+#include "clockTime.H"
+
+#include <algorithm>
+#include <vector>
+
+int main(int argc, char *argv[])
+{
+    argList::addNote("Void fraction field from a LIGGGHTS dump");
+    argList::addOption("dump", "file", "LIGGGHTS text dump (id x y z radius)");
+    argList::addOption("model", "name", "override the voidFractionModel");
+    argList::addOption("repeat", "N", "time N further calls (median)");
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    if (!args.found("dump"))
+    {
+        FatalErrorInFunction
+            << "missing -dump FILE (a LIGGGHTS text dump)" << exit(FatalError);
+    }
+    const fileName dumpFile(args.get<fileName>("dump").expand());
+
+    IOdictionary couplingProperties
+    (
+        IOobject
+        (
+            "couplingProperties",
+            runTime.constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+    dictionary dict(couplingProperties);
+    if (args.found("model"))
+    {
+        dict.set("voidFractionModel", args.get<word>("model"));
+    }
+
+    clockTime clock;
+    const particleData particles(particleData::readLiggghtsDump(dumpFile));
+    Info<< "Read " << particles.size() << " particles from " << dumpFile
+        << " in " << clock.timeIncrement() << " s" << endl;
+
+    autoPtr<voidFractionModel> model(voidFractionModel::New(dict, mesh));
+    model->update(particles);
+    const scalar firstCall = clock.timeIncrement();
+    model->report(Info);
+
+    const label repeat = args.getOrDefault<label>("repeat", 0);
+    std::vector<double> times;
+    for (label i = 0; i < repeat; ++i)
+    {
+        clock.timeIncrement();
+        model->update(particles);
+        times.push_back(returnReduce(clock.timeIncrement(), maxOp<scalar>()));
+    }
+    Info<< "time per call: first " << firstCall << " s";
+    if (!times.empty())
+    {
+        std::sort(times.begin(), times.end());
+        const double median = times[times.size()/2];
+        Info<< ", median of " << repeat << " " << median << " s, "
+            << particles.size()/max(median, VSMALL) << " particles/s";
+    }
+    Info<< endl;
+
+    model->voidFraction().write();
+    Info<< "Wrote voidfraction to " << runTime.timePath() << nl << "End" << endl;
+    return 0;
+}

@@ -1,0 +1,158 @@
+#include "particleCellLocator.H"
+#include "boundBox.H"
+#include "volFields.H"
+
+#include <algorithm>
+
+namespace
+{
+    // unique sorted values, merged within tol
+    Foam::scalarList uniqueCoordinates(std::vector<double> v, double tol)
+    {
+        std::sort(v.begin(), v.end());
+        Foam::DynamicList<Foam::scalar> u;
+        for (double x : v)
+        {
+            if (u.empty() || x - u.last() > tol) u.append(x);
+        }
+        return Foam::scalarList(u);
+    }
+
+    Foam::label interval(const Foam::scalarList& g, double x)
+    {
+        if (x < g.first() || x > g.last()) return -1;
+        const auto it = std::upper_bound(g.begin(), g.end(), x);
+        const Foam::label i = Foam::label(it - g.begin()) - 1;
+        return std::min(i, g.size() - 2);
+    }
+}
+
+
+bool Foam::particleCellLocator::detectTensorGrid()
+{
+    const pointField& pts = mesh_.points();
+    const cellList& cells = mesh_.cells();
+    if (cells.empty()) return false;
+    const scalar tol = 1e-9*boundBox(pts).mag();
+
+    for (direction d = 0; d < 3; ++d)
+    {
+        std::vector<double> v(pts.size());
+        forAll(pts, i) v[i] = pts[i][d];
+        grid_[d] = uniqueCoordinates(std::move(v), tol);
+    }
+    const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1, nz = grid_[2].size() - 1;
+    bool ok = (nx*ny*nz == cells.size());
+    if (ok)
+    {
+        ijkCell_.setSize(nx*ny*nz, -1);
+        forAll(cells, celli)
+        {
+            if (cells[celli].size() != 6) { ok = false; break; }
+            const boundBox bb(cells[celli].points(mesh_.faces(), pts), false);
+            if (mag(bb.volume() - mesh_.V()[celli]) > 1e-9*mesh_.V()[celli])
+            {
+                ok = false; break;
+            }
+            const point c = bb.centre();
+            const label i = interval(grid_[0], c.x());
+            const label j = interval(grid_[1], c.y());
+            const label k = interval(grid_[2], c.z());
+            // the cell must span exactly one interval in each direction
+            if
+            (
+                mag(bb.min().x() - grid_[0][i]) > tol || mag(bb.max().x() - grid_[0][i+1]) > tol
+             || mag(bb.min().y() - grid_[1][j]) > tol || mag(bb.max().y() - grid_[1][j+1]) > tol
+             || mag(bb.min().z() - grid_[2][k]) > tol || mag(bb.max().z() - grid_[2][k+1]) > tol
+            )
+            {
+                ok = false; break;
+            }
+            ijkCell_[i + nx*(j + ny*k)] = celli;
+        }
+    }
+    if (!ok)
+    {
+        ijkCell_.clear();
+        for (auto& g : grid_) g.clear();
+    }
+    return ok;
+}
+
+
+Foam::particleCellLocator::particleCellLocator(const fvMesh& mesh)
+:
+    mesh_(mesh)
+{
+    // decomposed cases: a processor's part of a box mesh is a box mesh too
+    if (detectTensorGrid())
+    {
+        Info<< "particleCellLocator: tensor-product mesh "
+            << grid_[0].size() - 1 << " x " << grid_[1].size() - 1 << " x "
+            << grid_[2].size() - 1 << ", cells found by index arithmetic" << endl;
+    }
+}
+
+
+bool Foam::particleCellLocator::inCell(const point& p, const label celli) const
+{
+    const cell& c = mesh_.cells()[celli];
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& Sf = mesh_.faceAreas();
+    for (const label facei : c)
+    {
+        const scalar s = ((p - Cf[facei]) & Sf[facei]);
+        const bool owner = (mesh_.faceOwner()[facei] == celli);
+        if ((owner && s > 0) || (!owner && s < 0)) return false;
+    }
+    return true;
+}
+
+
+Foam::label Foam::particleCellLocator::walk(const point& p, label celli) const
+{
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& Sf = mesh_.faceAreas();
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+    for (label step = 0; step < 1000; ++step)
+    {
+        // leave through the face the point is farthest outside of
+        label exitFace = -1;
+        scalar worst = 0;
+        for (const label facei : mesh_.cells()[celli])
+        {
+            scalar s = ((p - Cf[facei]) & Sf[facei])/mag(Sf[facei]);
+            if (own[facei] != celli) s = -s;
+            if (s > worst) { worst = s; exitFace = facei; }
+        }
+        if (exitFace < 0) return celli;
+        if (exitFace >= mesh_.nInternalFaces()) return -1;
+        celli = (own[exitFace] == celli) ? nei[exitFace] : own[exitFace];
+    }
+    return -1;
+}
+
+
+Foam::label Foam::particleCellLocator::findCell
+(
+    const point& p,
+    const label hint
+) const
+{
+    if (isTensorGrid())
+    {
+        const label i = interval(grid_[0], p.x());
+        const label j = interval(grid_[1], p.y());
+        const label k = interval(grid_[2], p.z());
+        if (i < 0 || j < 0 || k < 0) return -1;
+        const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1;
+        return ijkCell_[i + nx*(j + ny*k)];
+    }
+    if (hint >= 0)
+    {
+        const label celli = walk(p, hint);
+        if (celli >= 0) return celli;
+    }
+    return mesh_.findCell(p, polyMesh::FACE_PLANES);
+}

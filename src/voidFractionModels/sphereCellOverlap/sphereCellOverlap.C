@@ -1,0 +1,221 @@
+#include "sphereCellOverlap.H"
+#include "cyclicPolyPatch.H"
+#include "boundBox.H"
+#include "volFields.H"
+
+namespace
+{
+    inline sphereOverlap::vec3 toVec3(const Foam::vector& v)
+    {
+        return {v.x(), v.y(), v.z()};
+    }
+}
+
+
+Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    cellMin_(mesh.nCells()),
+    cellMax_(mesh.nCells()),
+    isBox_(mesh.nCells(), false),
+    faceNormal_(mesh.nFaces()),
+    planarFace_(mesh.nFaces(), true),
+    coupledFace_(mesh.nFaces() - mesh.nInternalFaces(), -1)
+{
+    const pointField& pts = mesh.points();
+    const faceList& faces = mesh.faces();
+    const vectorField& Sf = mesh.faceAreas();
+    const vectorField& Cf = mesh.faceCentres();
+
+    forAll(faces, facei)
+    {
+        const vector n = Sf[facei]/mag(Sf[facei]);
+        faceNormal_[facei] = toVec3(n);
+        const scalar tol = 1e-12*Foam::sqrt(mag(Sf[facei]));
+        for (const label pointi : faces[facei])
+        {
+            if (mag((pts[pointi] - Cf[facei]) & n) > tol)
+            {
+                planarFace_[facei] = false;
+                break;
+            }
+        }
+    }
+
+    forAll(mesh.cells(), celli)
+    {
+        const cell& c = mesh.cells()[celli];
+        const boundBox bb(c.points(faces, pts), false);
+        cellMin_[celli] = toVec3(bb.min());
+        cellMax_[celli] = toVec3(bb.max());
+        isBox_[celli] =
+            c.size() == 6
+         && mag(bb.volume() - mesh.V()[celli]) < 1e-10*mesh.V()[celli];
+    }
+
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (isA<cyclicPolyPatch>(pp))
+        {
+            const cyclicPolyPatch& cpp = refCast<const cyclicPolyPatch>(pp);
+            const label nbrStart = cpp.neighbPatch().start();
+            forAll(cpp, i)
+            {
+                coupledFace_[cpp.start() + i - mesh.nInternalFaces()] = nbrStart + i;
+            }
+        }
+    }
+}
+
+
+bool Foam::sphereCellOverlap::reachesBox
+(
+    const label celli,
+    const point& c,
+    const scalar R
+) const
+{
+    const sphereOverlap::vec3& lo = cellMin_[celli];
+    const sphereOverlap::vec3& hi = cellMax_[celli];
+    const scalar dx = max(max(lo.x - c.x(), c.x() - hi.x), 0.0);
+    const scalar dy = max(max(lo.y - c.y(), c.y() - hi.y), 0.0);
+    const scalar dz = max(max(lo.z - c.z(), c.z() - hi.z), 0.0);
+    return dx*dx + dy*dy + dz*dz < R*R;
+}
+
+
+bool Foam::sphereCellOverlap::holdsSphere
+(
+    const label celli,
+    const point& c,
+    const scalar R
+) const
+{
+    const vectorField& Cf = mesh_.faceCentres();
+    const labelList& own = mesh_.faceOwner();
+    for (const label facei : mesh_.cells()[celli])
+    {
+        if (!planarFace_[facei]) return false;
+        scalar s = sphereOverlap::dot(toVec3(Cf[facei] - c), faceNormal_[facei]);
+        if (own[facei] != celli) s = -s;
+        if (s < R) return false;
+    }
+    return true;
+}
+
+
+Foam::scalar Foam::sphereCellOverlap::generalCellVolume
+(
+    const label celli,
+    const sphereOverlap::vec3& c,
+    const scalar R
+) const
+{
+    using namespace sphereOverlap;
+    const pointField& pts = mesh_.points();
+    const faceList& faces = mesh_.faces();
+    const vectorField& Cf = mesh_.faceCentres();
+    scalar v = 0;
+    for (const label facei : mesh_.cells()[celli])
+    {
+        const face& f = faces[facei];
+        const bool owner = (mesh_.faceOwner()[facei] == celli);
+        const label n = f.size();
+        // outward order: as stored for the owner, reversed for the neighbour
+        auto pt = [&](std::size_t i)
+        {
+            return toVec3(pts[f[owner ? label(i) : n - 1 - label(i)]]);
+        };
+        if (planarFace_[facei])
+        {
+            const vec3 normal = owner ? faceNormal_[facei] : (-1.0)*faceNormal_[facei];
+            v += polygonCone(c, R, pt, n, normal);
+        }
+        else
+        {
+            const vec3 fc = toVec3(Cf[facei]);
+            for (label i = 0; i < n; ++i)
+            {
+                const vec3 tri[3] = {fc, pt(i), pt(i + 1 == n ? 0 : i + 1)};
+                vec3 normal = cross(tri[1] - tri[0], tri[2] - tri[0]);
+                const double a = mag(normal);
+                if (a == 0) continue;
+                normal = (1.0/a)*normal;
+                v += polygonCone(c, R, [&](std::size_t k) { return tri[k]; }, 3, normal);
+            }
+        }
+    }
+    return v;
+}
+
+
+Foam::scalar Foam::sphereCellOverlap::cellVolume
+(
+    const label celli,
+    const point& c,
+    const scalar R
+) const
+{
+    if (isBox_[celli])
+    {
+        return sphereOverlap::ballBoxVolume(toVec3(c), R, cellMin_[celli], cellMax_[celli]);
+    }
+    return generalCellVolume(celli, toVec3(c), R);
+}
+
+
+void Foam::sphereCellOverlap::overlaps
+(
+    const point& c,
+    const scalar R,
+    const label seedCell,
+    DynamicList<label>& cells,
+    DynamicList<scalar>& volumes
+) const
+{
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+    const vectorField& Cf = mesh_.faceCentres();
+    const label nInternal = mesh_.nInternalFaces();
+    const scalar shiftTol = 1e-6*R;
+
+    queue_.clear();
+    queue_.append(visit{seedCell, vector::zero});
+    auto enqueue = [&](const label celli, const vector& shift)
+    {
+        for (const visit& v : queue_)
+        {
+            if (v.cell == celli && magSqr(v.shift - shift) < sqr(shiftTol)) return;
+        }
+        if (reachesBox(celli, c + shift, R)) queue_.append(visit{celli, shift});
+    };
+
+    // queue_ grows while it is read: a breadth-first walk
+    for (label q = 0; q < queue_.size(); ++q)
+    {
+        const label celli = queue_[q].cell;
+        const vector shift = queue_[q].shift;
+        const scalar v = cellVolume(celli, c + shift, R);
+        if (v > 0)
+        {
+            cells.append(celli);
+            volumes.append(v);
+        }
+        for (const label facei : mesh_.cells()[celli])
+        {
+            if (facei < nInternal)
+            {
+                enqueue(own[facei] == celli ? nei[facei] : own[facei], shift);
+            }
+            else
+            {
+                const label nbrFace = coupledFace_[facei - nInternal];
+                if (nbrFace >= 0)
+                {
+                    // the image enters through nbrFace: shift by the translation
+                    enqueue(own[nbrFace], shift + Cf[nbrFace] - Cf[facei]);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,189 @@
+#include "voidFractionModel.H"
+#include "mathematicalConstants.H"
+#include "zeroGradientFvPatchFields.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(voidFractionModel, 0);
+    defineRunTimeSelectionTable(voidFractionModel, dictionary);
+}
+
+
+Foam::voidFractionModel::voidFractionModel
+(
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    mesh_(mesh),
+    coeffs_(dict.subOrEmptyDict(modelType + "Coeffs")),
+    alphaMin_(dict.lookupOrDefault<scalar>("alphaMin", 0.1)),
+    locator_(mesh),
+    solid_(mesh.nCells(), 0),
+    voidFraction_
+    (
+        IOobject
+        (
+            "voidfraction",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1.0),
+        zeroGradientFvPatchScalarField::typeName
+    )
+{
+    if (!(alphaMin_ >= 0 && alphaMin_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "alphaMin must lie in [0, 1), got " << alphaMin_
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::scalar Foam::voidFractionModel::limitSolidFraction()
+{
+    const scalarField& V = mesh_.V();
+    const labelListList& cellCells = mesh_.cellCells();
+    const scalar maxSolid = 1 - alphaMin_;
+    scalar moved = 0;
+
+    // each sweep hands the excess of every overfull cell to its neighbours
+    // in proportion to their free room; cells it fills pass theirs on in the
+    // next sweep
+    for (label sweep = 0; sweep < mesh_.nCells() + 1; ++sweep)
+    {
+        label nOver = 0;
+        forAll(solid_, celli)
+        {
+            const scalar excess = solid_[celli] - maxSolid*V[celli];
+            if (excess <= 0) continue;
+            ++nOver;
+            scalar room = 0;
+            for (const label nbr : cellCells[celli])
+            {
+                room += max(maxSolid*V[nbr] - solid_[nbr], 0.0);
+            }
+            const scalar give = (room > 0) ? min(excess, room) : 0;
+            if (give <= 0) continue;
+            for (const label nbr : cellCells[celli])
+            {
+                const scalar r = max(maxSolid*V[nbr] - solid_[nbr], 0.0);
+                solid_[nbr] += give*r/room;
+            }
+            solid_[celli] -= give;
+            moved += give;
+        }
+        if (nOver == 0) return moved;
+    }
+
+    FatalErrorInFunction
+        << "the particles hold more volume than (1 - alphaMin) of the mesh"
+        << " (alphaMin " << alphaMin_ << "): no void fraction >= alphaMin exists"
+        << exit(FatalError);
+    return moved;
+}
+
+
+void Foam::voidFractionModel::collectStatistics(const particleData& particles)
+{
+    // every processor holds every particle of the step here (the utility
+    // reads the whole dump): the per-particle sums are reduced over ranks
+    const label n = particles.size();
+    scalarField fractionSum(n);
+    labelList found(n);
+    forAll(fractionSum, p)
+    {
+        fractionSum[p] = weights_.sum(p);
+        found[p] = (centreCells_[p] >= 0);
+    }
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(fractionSum, plusEqOp<scalar>());
+        Pstream::listCombineScatter(fractionSum);
+        Pstream::listCombineGather(found, plusEqOp<label>());
+        Pstream::listCombineScatter(found);
+    }
+    const scalarField& r = particles.radii();
+    for (label p = 0; p < n; ++p)
+    {
+        const scalar Vp = 4.0/3.0*constant::mathematical::pi*pow3(r[p]);
+        stats_.particleVolume += Vp;
+        stats_.meshedVolume += fractionSum[p]*Vp;
+        if (!found[p]) ++stats_.nOutside;
+        else if (fractionSum[p] < 1 - 1e-9) ++stats_.nCut;
+    }
+}
+
+
+void Foam::voidFractionModel::update(const particleData& particles)
+{
+    const label n = particles.size();
+    const pointField& x = particles.positions();
+
+    // hints from the previous step are valid while the particle list is
+    if (centreCells_.size() != n) centreCells_.setSize(n, -1);
+    forAll(x, p)
+    {
+        centreCells_[p] = locator_.findCell(x[p], centreCells_[p]);
+    }
+
+    weights_.clear();
+    distribute(particles);
+    if (weights_.nParticles() != n)
+    {
+        FatalErrorInFunction
+            << type() << " produced weights for " << weights_.nParticles()
+            << " of " << n << " particles" << abort(FatalError);
+    }
+
+    stats_ = statistics();
+    stats_.nParticles = n;
+    solid_ = 0;
+    const scalarField& r = particles.radii();
+    for (label p = 0; p < n; ++p)
+    {
+        const scalar Vp = 4.0/3.0*constant::mathematical::pi*pow3(r[p]);
+        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+        {
+            solid_[weights_.cell(k)] += weights_.fraction(k)*Vp;
+        }
+    }
+    collectStatistics(particles);
+
+    stats_.movedVolume = limitSolidFraction();
+
+    const scalarField& V = mesh_.V();
+    scalarField& alpha = voidFraction_.primitiveFieldRef();
+    forAll(alpha, celli)
+    {
+        alpha[celli] = 1 - solid_[celli]/V[celli];
+    }
+    voidFraction_.correctBoundaryConditions();
+    stats_.solidVolume = gSum(solid_);
+    stats_.movedVolume = returnReduce(stats_.movedVolume, sumOp<scalar>());
+    stats_.minVoidFraction = gMin(alpha);
+    stats_.maxVoidFraction = gMax(alpha);
+}
+
+
+void Foam::voidFractionModel::report(Ostream& os) const
+{
+    const statistics& s = stats_;
+    os  << type() << ": " << s.nParticles << " particles, volume "
+        << s.particleVolume << nl
+        << "    solid volume in the field " << s.solidVolume
+        << ", of the particles inside the mesh " << s.meshedVolume
+        << ", conservation error "
+        << mag(s.solidVolume - s.meshedVolume)/max(s.meshedVolume, VSMALL) << nl
+        << "    particles with centre outside the mesh " << s.nOutside
+        << ", reaching outside " << s.nCut
+        << ", volume outside " << s.particleVolume - s.meshedVolume << nl
+        << "    void fraction min " << s.minVoidFraction
+        << " max " << s.maxVoidFraction
+        << ", volume moved by alphaMin " << s.movedVolume << endl;
+}

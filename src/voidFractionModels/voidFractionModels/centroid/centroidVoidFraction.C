@@ -1,0 +1,32 @@
+#include "centroidVoidFraction.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace voidFractionModels
+{
+    defineTypeNameAndDebug(centroid, 0);
+    addToRunTimeSelectionTable(voidFractionModel, centroid, dictionary);
+}
+}
+
+
+Foam::voidFractionModels::centroid::centroid
+(
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    voidFractionModel(modelType, dict, mesh)
+{}
+
+
+void Foam::voidFractionModels::centroid::distribute(const particleData& particles)
+{
+    forAll(centreCells_, p)
+    {
+        if (centreCells_[p] >= 0) weights_.append(centreCells_[p], 1.0);
+        weights_.endParticle();
+    }
+}

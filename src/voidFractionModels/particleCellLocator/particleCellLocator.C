@@ -154,5 +154,5 @@ Foam::label Foam::particleCellLocator::findCell
         const label celli = walk(p, hint);
         if (celli >= 0) return celli;
     }
-    return mesh_.findCell(p, polyMesh::FACE_PLANES);
+    return mesh_.findCell(p, polyMesh::CELL_TETS);
 }

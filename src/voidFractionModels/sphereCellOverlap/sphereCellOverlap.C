@@ -1,5 +1,7 @@
 #include "sphereCellOverlap.H"
 #include "cyclicPolyPatch.H"
+#include "emptyPolyPatch.H"
+#include "treeBoundBox.H"
 #include "boundBox.H"
 #include "volFields.H"
 
@@ -53,8 +55,13 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
          && mag(bb.volume() - mesh.V()[celli]) < 1e-10*mesh.V()[celli];
     }
 
+    DynamicList<label> bFaces;
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
+        if (!isA<emptyPolyPatch>(pp) && !isA<cyclicPolyPatch>(pp))
+        {
+            forAll(pp, i) bFaces.append(pp.start() + i);
+        }
         if (isA<cyclicPolyPatch>(pp))
         {
             const cyclicPolyPatch& cpp = refCast<const cyclicPolyPatch>(pp);
@@ -64,6 +71,38 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
                 coupledFace_[cpp.start() + i - mesh.nInternalFaces()] = nbrStart + i;
             }
         }
+    }
+    boundaryFaces_.transfer(bFaces);
+    if (boundaryFaces_.size())
+    {
+        treeBoundBox bb(pts);
+        bb.inflate(1e-6);
+        boundaryTree_.reset
+        (
+            new indexedOctree<treeDataFace>
+            (
+                treeDataFace(true, mesh, boundaryFaces_),
+                bb, 8, 10.0, 3.0
+            )
+        );
+    }
+}
+
+
+void Foam::sphereCellOverlap::boundarySeeds
+(
+    const point& c,
+    const scalar R,
+    DynamicList<label>& seeds
+) const
+{
+    if (!boundaryTree_.valid()) return;
+    const treeBoundBox sphereBox(c - vector(R, R, R), c + vector(R, R, R));
+    const labelList hits(boundaryTree_->findBox(sphereBox));
+    for (const label i : hits)
+    {
+        const label celli = mesh_.faceOwner()[boundaryFaces_[i]];
+        if (reachesBox(celli, c, R) && !seeds.found(celli)) seeds.append(celli);
     }
 }
 
@@ -168,7 +207,7 @@ void Foam::sphereCellOverlap::overlaps
 (
     const point& c,
     const scalar R,
-    const label seedCell,
+    const labelUList& seeds,
     DynamicList<label>& cells,
     DynamicList<scalar>& volumes
 ) const
@@ -180,7 +219,6 @@ void Foam::sphereCellOverlap::overlaps
     const scalar shiftTol = 1e-6*R;
 
     queue_.clear();
-    queue_.append(visit{seedCell, vector::zero});
     auto enqueue = [&](const label celli, const vector& shift)
     {
         for (const visit& v : queue_)
@@ -189,6 +227,7 @@ void Foam::sphereCellOverlap::overlaps
         }
         if (reachesBox(celli, c + shift, R)) queue_.append(visit{celli, shift});
     };
+    for (const label seed : seeds) enqueue(seed, Zero);
 
     // queue_ grows while it is read: a breadth-first walk
     for (label q = 0; q < queue_.size(); ++q)

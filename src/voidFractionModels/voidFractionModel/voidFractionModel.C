@@ -50,41 +50,57 @@ Foam::scalar Foam::voidFractionModel::limitSolidFraction()
     const scalarField& V = mesh_.V();
     const labelListList& cellCells = mesh_.cellCells();
     const scalar maxSolid = 1 - alphaMin_;
-    scalar moved = 0;
 
-    // each sweep hands the excess of every overfull cell to its neighbours
-    // in proportion to their free room; cells it fills pass theirs on in the
-    // next sweep
-    for (label sweep = 0; sweep < mesh_.nCells() + 1; ++sweep)
+    if (sum(solid_) > maxSolid*sum(V))
     {
-        label nOver = 0;
+        FatalErrorInFunction
+            << "the particles hold " << sum(solid_) << " m3, more than (1 - alphaMin)"
+            << " of the mesh volume " << sum(V) << " (alphaMin " << alphaMin_
+            << "): no void fraction >= alphaMin exists" << exit(FatalError);
+    }
+
+    // Each sweep hands the excess of every overfull cell to its neighbours,
+    // in proportion to their free room, or, when they are all full, to all
+    // of them by volume: they pass it on in the next sweep, so the excess
+    // spreads until it finds room. Nothing is deleted.
+    scalar moved = 0;
+    DynamicList<label> over;
+    for (label sweep = 0; sweep < 100000; ++sweep)
+    {
+        over.clear();
         forAll(solid_, celli)
         {
+            if (solid_[celli] > maxSolid*V[celli]*(1 + 1e-12)) over.append(celli);
+        }
+        if (over.empty()) return moved;
+
+        for (const label celli : over)
+        {
             const scalar excess = solid_[celli] - maxSolid*V[celli];
-            if (excess <= 0) continue;
-            ++nOver;
-            scalar room = 0;
-            for (const label nbr : cellCells[celli])
+            const labelList& nbrs = cellCells[celli];
+            if (excess <= 0 || nbrs.empty()) continue;
+            scalar room = 0, nbrV = 0;
+            for (const label nbr : nbrs)
             {
                 room += max(maxSolid*V[nbr] - solid_[nbr], 0.0);
+                nbrV += V[nbr];
             }
-            const scalar give = (room > 0) ? min(excess, room) : 0;
-            if (give <= 0) continue;
-            for (const label nbr : cellCells[celli])
+            const scalar give = (room > 0) ? min(excess, room) : excess;
+            for (const label nbr : nbrs)
             {
-                const scalar r = max(maxSolid*V[nbr] - solid_[nbr], 0.0);
-                solid_[nbr] += give*r/room;
+                const scalar w = (room > 0)
+                    ? max(maxSolid*V[nbr] - solid_[nbr], 0.0)/room
+                    : V[nbr]/nbrV;
+                solid_[nbr] += give*w;
             }
             solid_[celli] -= give;
             moved += give;
         }
-        if (nOver == 0) return moved;
     }
 
     FatalErrorInFunction
-        << "the particles hold more volume than (1 - alphaMin) of the mesh"
-        << " (alphaMin " << alphaMin_ << "): no void fraction >= alphaMin exists"
-        << exit(FatalError);
+        << "the alphaMin limiter did not find room for the excess solid volume"
+        << " (alphaMin " << alphaMin_ << ")" << exit(FatalError);
     return moved;
 }
 

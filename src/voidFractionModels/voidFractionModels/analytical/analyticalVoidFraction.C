@@ -1,8 +1,6 @@
 #include "analyticalVoidFraction.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
-#include "indexedOctree.H"
-#include "treeDataCell.H"
 
 namespace Foam
 {
@@ -33,28 +31,21 @@ void Foam::voidFractionModels::analytical::distribute(const particleData& partic
 
     forAll(x, p)
     {
-        label seed = centreCells_[p];
+        const label seed = centreCells_[p];
         if (seed >= 0 && overlap_.holdsSphere(seed, x[p], r[p]))
         {
             weights_.append(seed, 1.0);
             weights_.endParticle();
             continue;
         }
-        if (seed < 0)
-        {
-            // centre outside the mesh: start from the nearest cell it reaches
-            const pointIndexHit hit =
-                mesh_.cellTree().findNearest(x[p], sqr(4*r[p]));
-            if (hit.hit() && overlap_.reachesBox(hit.index(), x[p], r[p]))
-            {
-                seed = hit.index();
-            }
-        }
-        if (seed >= 0)
+        seeds_.clear();
+        if (seed >= 0) seeds_.append(seed);
+        else overlap_.boundarySeeds(x[p], r[p], seeds_);
+        if (seeds_.size())
         {
             cells_.clear();
             volumes_.clear();
-            overlap_.overlaps(x[p], r[p], seed, cells_, volumes_);
+            overlap_.overlaps(x[p], r[p], seeds_, cells_, volumes_);
             const scalar Vp = 4.0/3.0*constant::mathematical::pi*pow3(r[p]);
             forAll(cells_, k)
             {

@@ -1,0 +1,250 @@
+#!/usr/bin/env python3
+"""The model tests on real OpenFOAM meshes. Every check compares a number with
+an independent reference (sums of sphere volumes, closed forms, the serial
+run for the parallel one) and a tolerance. Ends with 'N passed, N failed'."""
+import math
+import os
+import re
+import shutil
+import sys
+
+from foamCase import (ROOT, box_block_mesh, cell_volumes, new_case, parse_report,
+                      random_spheres, read_scalar_field, set_coupling, sh, sphere_volume,
+                      write_dump)
+
+WORK = os.path.join(ROOT, "build", "tests")
+passed = failed = 0
+
+
+def check(name, ok, detail=""):
+    global passed, failed
+    if ok:
+        passed += 1
+        print("  ok   %s %s" % (name, detail))
+    else:
+        failed += 1
+        print("  FAIL %s %s" % (name, detail))
+
+
+def near(name, got, want, tol):
+    ok = got is not None and math.isfinite(got) and abs(got - want) <= tol
+    check(name, ok, "(got %.17g, want %.17g, tol %.3g)" % (got if got is not None else float("nan"), want, tol))
+
+
+def run_model(case, dump, model, extra=""):
+    rc, out = sh("demVoidFraction -dump %s -model %s %s" % (dump, model, extra), case, check=False)
+    if rc != 0:
+        print(out[-600:])
+    return rc, out
+
+
+def field_checks(label, case, centres, radii, model, alpha_min=0.05):
+    """Run the model; the field's solid volume must equal the sum of the
+    sphere volumes (all spheres lie wholly inside the mesh or wrap through
+    cyclic patches), and the void fraction lie in [alphaMin, 1]."""
+    dump = os.path.join(case, "particles.dump")
+    write_dump(dump, centres, radii)
+    rc, out = run_model(case, dump, model)
+    check("%s %s runs" % (label, model), rc == 0)
+    if rc != 0:
+        return None
+    alpha = read_scalar_field(os.path.join(case, "0", "voidfraction"))
+    V = cell_volumes(case)
+    solid = sum((1 - a) * v for a, v in zip(alpha, V))
+    want = sum(sphere_volume(r) for r in radii)
+    near("%s %s solid volume = sum of sphere volumes (rel)" % (label, model), solid / want, 1.0, 1e-12)
+    check("%s %s void fraction in [alphaMin, 1]" % (label, model),
+          all(alpha_min - 1e-12 <= a <= 1 + 1e-12 for a in alpha),
+          "(min %.6f max %.6f)" % (min(alpha), max(alpha)))
+    return alpha
+
+
+L = 0.03
+LO, HI = (0, 0, 0), (L, L, L)
+
+
+def test_meshes():
+    print("conservation on five kinds of mesh, polydisperse random spheres")
+    spheres = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=3)
+    meshes = {
+        "cartesian": box_block_mesh(LO, HI, (10, 10, 10)),
+        "graded": box_block_mesh(LO, HI, (12, 9, 10), grading=(4, 0.3, 2)),
+    }
+    for name, bm in meshes.items():
+        case = new_case(os.path.join(WORK, name), bm)
+        for model in ("centroid", "analytical"):
+            field_checks(name, case, *spheres, model)
+
+    # sheared hexahedra: an affine map of the box, particles mapped alike
+    case = new_case(os.path.join(WORK, "sheared"), box_block_mesh(LO, HI, (9, 9, 9)))
+    shear = lambda p: (p[0] + 0.3 * p[1], p[1], p[2] + 0.2 * p[0])
+    pts_file = os.path.join(case, "constant", "polyMesh", "points")
+    point_line = re.compile(r"^\([ \t]*(\S+)[ \t]+(\S+)[ \t]+(\S+)[ \t]*\)$", re.M)
+    text = open(pts_file).read()
+    text = point_line.sub(lambda m: "(%.17g %.17g %.17g)" % shear([float(v) for v in m.groups()]), text)
+    open(pts_file, "w").write(text)
+    c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=4)
+    # a margin of 1.6 r in the unsheared box keeps every sphere inside
+    c = [shear([min(max(ci[d], 1.6 * ri), L - 1.6 * ri) for d in range(3)]) for ci, ri in zip(c, r)]
+    for model in ("centroid", "analytical"):
+        field_checks("sheared", case, c, r, model)
+
+    case = new_case(os.path.join(WORK, "tet"))
+    shutil.rmtree(os.path.join(case, "constant", "polyMesh"), ignore_errors=True)
+    sh("python3 %s/tests/makeTetMesh.py . 6 %r 0.2" % (ROOT, L), case)
+    for model in ("centroid", "analytical"):
+        field_checks("tetrahedral", case, *spheres, model)
+
+    # polyhedral cells with warped faces: the dual of the tet mesh
+    poly = os.path.join(WORK, "polyhedral")
+    shutil.rmtree(poly, ignore_errors=True)
+    shutil.copytree(case, poly)
+    shutil.rmtree(os.path.join(poly, "0"), ignore_errors=True)
+    sh("polyDualMesh 80 -overwrite", poly)
+    for model in ("centroid", "analytical"):
+        field_checks("polyhedral", poly, *spheres, model)
+
+
+def test_closed_forms():
+    print("closed forms on a mesh: a sphere on a grid vertex, edge and face")
+    case = new_case(os.path.join(WORK, "closed"), box_block_mesh(LO, HI, (10, 10, 10)))
+    h = L / 10
+    R = 0.001
+    V = cell_volumes(case)
+    cases = {"vertex": ((5 * h, 5 * h, 5 * h), 8), "edge": ((5 * h, 5 * h, 4.5 * h), 4),
+             "face": ((5 * h, 4.5 * h, 4.5 * h), 2)}
+    for name, (c, k) in cases.items():
+        write_dump(os.path.join(case, "one.dump"), [c], [R])
+        rc, _ = run_model(case, "one.dump", "analytical")
+        alpha = read_scalar_field(os.path.join(case, "0", "voidfraction"))
+        solids = sorted(((1 - a) * v for a, v in zip(alpha, V)), reverse=True)
+        near("sphere on a %s: %d cells hold V/%d each (rel)" % (name, k, k),
+             max(abs(s / (sphere_volume(R) / k) - 1) for s in solids[:k]), 0, 1e-12)
+        near("sphere on a %s: no other cell holds any" % name, solids[k], 0, 1e-20)
+
+
+def test_fast_against_general():
+    print("axis-aligned fast path against the general path on a rotated mesh")
+    c, r = random_spheres(800, 0.0005, 0.002, LO, HI, seed=5)   # cells smaller and larger than spheres
+    base = new_case(os.path.join(WORK, "unrotated"), box_block_mesh(LO, HI, (8, 8, 8)))
+    a0 = field_checks("unrotated", base, c, r, "analytical")
+    rot = new_case(os.path.join(WORK, "rotated"), box_block_mesh(LO, HI, (8, 8, 8)))
+    sh("transformPoints -rotate '((1 0 0) (0.8 0.6 0))'", rot)
+    cr = [(0.8 * p[0] - 0.6 * p[1], 0.6 * p[0] + 0.8 * p[1], p[2]) for p in c]
+    a1 = field_checks("rotated", rot, cr, r, "analytical")
+    if a0 and a1:
+        near("rotated (general path) = unrotated (box path), max |d alpha|",
+             max(abs(x - y) for x, y in zip(a0, a1)), 0, 1e-11)
+
+
+def test_cyclic():
+    print("cyclic patches: spheres beyond one side land on the other")
+    cyc = {"xmin": "type cyclic; neighbourPatch xmax;", "xmax": "type cyclic; neighbourPatch xmin;"}
+    case = new_case(os.path.join(WORK, "cyclic"), box_block_mesh(LO, HI, (10, 10, 10), patches=cyc))
+    c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=6, periodic_axes=(0,))
+    for model in ("centroid", "analytical"):
+        field_checks("cyclic", case, c, r, model)
+    h = L / 10
+    R = 0.001
+    write_dump(os.path.join(case, "one.dump"), [(0.0, 4.5 * h, 4.5 * h)], [R])
+    run_model(case, "one.dump", "analytical")
+    alpha = read_scalar_field(os.path.join(case, "0", "voidfraction"))
+    V = cell_volumes(case)
+    first, last = 0 + 10 * (4 + 10 * 4), 9 + 10 * (4 + 10 * 4)
+    for name, i in (("first", first), ("last", last)):
+        near("sphere centred on the cyclic plane: %s cell holds V/2 (rel)" % name,
+             (1 - alpha[i]) * V[i] / (sphere_volume(R) / 2), 1, 1e-12)
+
+
+def test_parallel():
+    print("serial against mpirun -np 2")
+    for name, mesh in (("cartesian", "block"), ("tetrahedral", "tet")):
+        case = os.path.join(WORK, "parallel-" + name)
+        if mesh == "block":
+            new_case(case, box_block_mesh(LO, HI, (10, 10, 10)))
+        else:
+            new_case(case)
+            shutil.rmtree(os.path.join(case, "constant", "polyMesh"), ignore_errors=True)
+            sh("python3 %s/tests/makeTetMesh.py . 6 %r 0.2" % (ROOT, L), case)
+        c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=7)
+        write_dump(os.path.join(case, "p.dump"), c, r)
+        for model in ("centroid", "analytical"):
+            sh("rm -rf processor* 0", case)
+            run_model(case, "p.dump", model)
+            serial = read_scalar_field(os.path.join(case, "0", "voidfraction"))
+            sh("rm -rf 0 && decomposePar -force", case)
+            rc, out = sh("mpirun -np 2 demVoidFraction -parallel -dump p.dump -model %s" % model,
+                         case, check=False)
+            check("%s %s runs on 2 ranks" % (name, model), rc == 0)
+            if rc != 0:
+                print(out[-600:])
+                continue
+            sh("reconstructPar -withZero -fields '(voidfraction)'", case)
+            par = read_scalar_field(os.path.join(case, "0", "voidfraction"))
+            near("%s %s serial = parallel, max |d alpha|" % (name, model),
+                 max(abs(x - y) for x, y in zip(serial, par)), 0, 1e-12)
+
+
+def test_alpha_min():
+    print("alphaMin: excess volume moved to neighbours, not deleted")
+    case = new_case(os.path.join(WORK, "alphaMin"), box_block_mesh(LO, HI, (10, 10, 10)),
+                    coupling="voidFractionModel centroid;\nalphaMin 0.4;\n")
+    h = L / 10
+    c, r = random_spheres(60, 0.0008, 0.0009, (4 * h,) * 3, (5 * h,) * 3, seed=8, gap=False)
+    for model in ("centroid", "analytical"):
+        alpha = field_checks("crowded cell", case, c, r, model, alpha_min=0.4)
+        _, out = run_model(case, "particles.dump", model)
+        check("crowded cell %s reports moved volume" % model, (parse_report(out)["moved"] or 0) > 0)
+
+
+def test_bad_input():
+    print("bad input: clear errors")
+    case = new_case(os.path.join(WORK, "bad"), box_block_mesh(LO, HI, (4, 4, 4)))
+    write_dump(os.path.join(case, "ok.dump"), [(0.01, 0.01, 0.01)], [0.001])
+    set_coupling(case, "voidFractionModel nonsense;\n")
+    rc, out = sh("demVoidFraction -dump ok.dump", case, check=False)
+    check("unknown model: error lists the valid names",
+          rc != 0 and "nonsense" in out and "analytical" in out and "centroid" in out)
+    set_coupling(case, "voidFractionModel analytical;\nalphaMin 2;\n")
+    rc, out = sh("demVoidFraction -dump ok.dump", case, check=False)
+    check("alphaMin out of range: error names it", rc != 0 and "alphaMin" in out)
+    set_coupling(case, "voidFractionModel analytical;\n")
+    good = "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\n"
+    bad = {
+        "missing column": (good + "ITEM: ATOMS id x y z\n1 0.01 0.01 0.01\n2 0.01 0.01 0.01\n", "radius"),
+        "malformed number": (good + "ITEM: ATOMS id x y z radius\n1 0.01 0.01 0.01 0.001\n2 0.01 0.0.1 0.01 0.001\n", "line 11"),
+        "NaN": (good + "ITEM: ATOMS id x y z radius\n1 0.01 0.01 nan 0.001\n2 0.01 0.01 0.01 0.001\n", "line 10"),
+        "negative radius": (good + "ITEM: ATOMS id x y z radius\n1 0.01 0.01 0.01 -0.001\n2 0.01 0.01 0.01 0.001\n", "radius"),
+        "zero radius": (good + "ITEM: ATOMS id x y z radius\n1 0.01 0.01 0.01 0.001\n2 0.01 0.01 0.01 0\n", "line 11"),
+        "truncated": (good + "ITEM: ATOMS id x y z radius\n1 0.01 0.01 0.01 0.001\n", "found 1"),
+        "short row": (good + "ITEM: ATOMS id x y z radius\n1 0.01 0.01 0.01 0.001\n2 0.01 0.01\n", "line 11"),
+        "empty file": ("", "empty"),
+    }
+    for name, (text, needle) in bad.items():
+        path = os.path.join(case, "bad.dump")
+        open(path, "w").write(text)
+        rc, out = sh("demVoidFraction -dump bad.dump", case, check=False)
+        check("dump with %s: error names file and cause" % name,
+              rc != 0 and "bad.dump" in out and needle in out and "Segmentation" not in out)
+    rc, out = sh("demVoidFraction -dump missing.dump", case, check=False)
+    check("missing dump file: error", rc != 0 and "missing.dump" in out)
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    only = sys.argv[1:]
+    tests = [test_closed_forms, test_meshes, test_fast_against_general, test_cyclic,
+             test_alpha_min, test_parallel, test_bad_input]
+    for t in tests:
+        if only and t.__name__ not in only:
+            continue
+        try:
+            t()
+        except Exception as e:   # a crashed test is a failed test
+            check(t.__name__ + " completed", False, str(e)[-2000:])
+    print("models: %d passed, %d failed" % (passed, failed))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

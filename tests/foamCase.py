@@ -50,7 +50,7 @@ def box_block_mesh(lo, hi, n, grading=(1, 1, 1), patches=None):
     faces = {"xmin": "(0 4 7 3)", "xmax": "(1 2 6 5)", "ymin": "(0 1 5 4)",
              "ymax": "(3 7 6 2)", "zmin": "(0 3 2 1)", "zmax": "(4 5 6 7)"}
     patches = patches or {}
-    body = "convertToMeters 1;\nvertices (%s);\n" % " ".join("(%.17g %.17g %.17g)" % p for p in v)
+    body = "scale 1;\nvertices (%s);\n" % " ".join("(%.17g %.17g %.17g)" % p for p in v)
     body += "blocks ( hex (0 1 2 3 4 5 6 7) (%d %d %d) simpleGrading (%g %g %g) );\n" % (tuple(n) + tuple(grading))
     body += "boundary (\n"
     walls = [k for k in faces if k not in patches]

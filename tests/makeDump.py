@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Writes a LIGGGHTS-style text dump of random polydisperse spheres.
 
 usage: makeDump.py OUT N rmin rmax xmin xmax ymin ymax zmin zmax [seed] [--wall-gap]

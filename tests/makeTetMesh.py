@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Writes a tetrahedral OpenFOAM polyMesh of a box: a grid of n^3 hexahedra,
 interior points jittered, each hexahedron split into 6 tetrahedra around its
 main diagonal (a conforming split). One wall patch 'walls'.

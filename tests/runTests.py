@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The model tests on real OpenFOAM meshes. Every check compares a number with
 an independent reference (sums of sphere volumes, closed forms, the serial
 run for the parallel one) and a tolerance. Ends with 'N passed, N failed'."""
@@ -91,7 +91,7 @@ def test_meshes():
 
     case = new_case(os.path.join(WORK, "tet"))
     shutil.rmtree(os.path.join(case, "constant", "polyMesh"), ignore_errors=True)
-    sh("python3 %s/tests/makeTetMesh.py . 6 %r 0.2" % (ROOT, L), case)
+    sh("/usr/bin/python3 %s/tests/makeTetMesh.py . 6 %r 0.2" % (ROOT, L), case)
     for model in ("centroid", "analytical"):
         field_checks("tetrahedral", case, *spheres, model)
 
@@ -165,7 +165,7 @@ def test_parallel():
         else:
             new_case(case)
             shutil.rmtree(os.path.join(case, "constant", "polyMesh"), ignore_errors=True)
-            sh("python3 %s/tests/makeTetMesh.py . 6 %r 0.2" % (ROOT, L), case)
+            sh("/usr/bin/python3 %s/tests/makeTetMesh.py . 6 %r 0.2" % (ROOT, L), case)
         c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=7)
         write_dump(os.path.join(case, "p.dump"), c, r)
         for model in ("centroid", "analytical"):

@@ -10,7 +10,8 @@ Description
     outside the mesh and the time per call.
 
 Usage
-    demVoidFraction -dump FILE [-model NAME] [-repeat N] [-case DIR] [-parallel]
+    demVoidFraction -dump FILE [-model NAME] [-name FIELD] [-repeat N]
+        [-case DIR] [-parallel]
 
     -model overrides the dictionary's voidFractionModel; -repeat N calls the
     model N more times after a warm-up and reports the median time per call.
@@ -30,6 +31,7 @@ int main(int argc, char *argv[])
     argList::addOption("dump", "file", "LIGGGHTS text dump (id x y z radius)");
     argList::addOption("model", "name", "override the voidFractionModel");
     argList::addOption("repeat", "N", "time N further calls (median)");
+    argList::addOption("name", "field", "write the field under this name");
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -87,7 +89,14 @@ int main(int argc, char *argv[])
     }
     Info<< endl;
 
-    model->voidFraction().write();
-    Info<< "Wrote voidfraction to " << runTime.timePath() << nl << "End" << endl;
+    const word fieldName(args.getOrDefault<word>("name", "voidfraction"));
+    volScalarField out
+    (
+        IOobject(fieldName, runTime.timeName(), mesh),
+        model->voidFraction()
+    );
+    out.write();
+    Info<< "Wrote " << fieldName << " to " << runTime.timePath() << nl
+        << "End" << endl;
     return 0;
 }

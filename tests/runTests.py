@@ -121,6 +121,15 @@ def test_closed_forms():
         near("sphere on a %s: %d cells hold V/%d each (rel)" % (name, k, k),
              max(abs(s / (sphere_volume(R) / k) - 1) for s in solids[:k]), 0, 1e-12)
         near("sphere on a %s: no other cell holds any" % name, solids[k], 0, 1e-20)
+    # centred on the wall x = 0: half inside, half reported outside
+    write_dump(os.path.join(case, "one.dump"), [(0.0, 4.5 * h, 4.5 * h)], [R])
+    rc, out = run_model(case, "one.dump", "analytical")
+    alpha = read_scalar_field(os.path.join(case, "0", "voidfraction"))
+    near("sphere centred on a wall: the mesh holds V/2 (rel)",
+         sum((1 - a) * v for a, v in zip(alpha, V)) / (sphere_volume(R) / 2), 1, 1e-12)
+    m = re.search(r"volume outside (\S+)", out)
+    near("sphere centred on a wall: V/2 reported outside (rel)",
+         float(m.group(1)) / (sphere_volume(R) / 2) if m else None, 1, 1e-12)
 
 
 def test_fast_against_general():

@@ -288,5 +288,43 @@ int main()
     // sliver: a very thin box through the centre is its thickness times the disk area
     near("thin slab", ballBoxVolume({0, 0, 0}, R, {-2, -2, -1e-7}, {2, 2, 1e-7}),
          3.14159265358979323846*R*R*2e-7, 1e-9*3.14159265358979323846*R*R*2e-7);
+    // wedge closed form and the plane split against the box formula
+    {
+        std::uniform_real_distribution<double> W(-1.1*R, 1.1*R);
+        double worstWedge = 0, worstSplit = 0, worstSum = 0;
+        for (int k = 0; k < 2000; ++k)
+        {
+            const double a = W(rng), b = W(rng);
+            const double ref = ballBoxVolume({0, 0, 0}, R, {a, b, -2*R}, {2*R, 2*R, 2*R});
+            worstWedge = std::max(worstWedge, std::fabs(wedgeVolume(R, a, b) - ref)/V);
+            const double p[3] = {W(rng), W(rng), W(rng)};
+            const bool cut[3] = {k % 2 == 0, k % 3 != 0, k % 5 != 1};
+            double piece[8];
+            planeSplit(R, p, cut, piece);
+            double sum = 0;
+            for (int s = 0; s < 8; ++s)
+            {
+                sum += piece[s];
+                vec3 lo{-2*R, -2*R, -2*R}, hi{2*R, 2*R, 2*R};
+                double* l[3] = {&lo.x, &lo.y, &lo.z};
+                double* h[3] = {&hi.x, &hi.y, &hi.z};
+                bool empty = false;
+                for (int d = 0; d < 3; ++d)
+                {
+                    if (!cut[d]) { empty |= bool(s & (1 << d)); continue; }
+                    if (s & (1 << d)) *l[d] = p[d]; else *h[d] = p[d];
+                }
+                const double want = empty ? 0 : ballBoxVolume({0, 0, 0}, R, lo, hi);
+                worstSplit = std::max(worstSplit, std::fabs(piece[s] - want)/V);
+            }
+            worstSum = std::max(worstSum, std::fabs(sum - V)/V);
+        }
+        std::printf("wedge worst %.2e, split worst %.2e, split sum worst %.2e\n",
+                    worstWedge, worstSplit, worstSum);
+        near("wedge closed form = box formula (rel. to sphere)", worstWedge, 0, 1e-13);
+        near("plane split pieces = box formula (rel. to sphere)", worstSplit, 0, 1e-13);
+        near("plane split pieces sum to the sphere", worstSum, 0, 1e-14);
+        near("wedge through the centre is a quarter", wedgeVolume(R, 0, 0), V/4, 1e-15*V);
+    }
     return testHarness::summary("geometry");
 }

@@ -1,5 +1,6 @@
 #include "particleCellLocator.H"
 #include "boundBox.H"
+#include "cyclicPolyPatch.H"
 #include "volFields.H"
 
 #include <algorithm>
@@ -76,13 +77,49 @@ bool Foam::particleCellLocator::detectTensorGrid()
         ijkCell_.clear();
         for (auto& g : grid_) g.clear();
     }
+    else
+    {
+        detectPeriodicEnds();
+    }
     return ok;
+}
+
+
+void Foam::particleCellLocator::detectPeriodicEnds()
+{
+    const vectorField& Cf = mesh_.faceCentres();
+    const scalar tol = 1e-9*boundBox(mesh_.points()).mag();
+    label nCyclic[3] = {0, 0, 0}, nOther[3] = {0, 0, 0};
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        const bool cyclic = isA<cyclicPolyPatch>(pp);
+        forAll(pp, i)
+        {
+            const point& c = Cf[pp.start() + i];
+            for (direction d = 0; d < 3; ++d)
+            {
+                if
+                (
+                    mag(c[d] - grid_[d].first()) < tol
+                 || mag(c[d] - grid_[d].last()) < tol
+                )
+                {
+                    (cyclic ? nCyclic[d] : nOther[d])++;
+                }
+            }
+        }
+    }
+    for (direction d = 0; d < 3; ++d)
+    {
+        periodic_[d] = (nCyclic[d] && nOther[d]) ? -1 : (nCyclic[d] ? 1 : 0);
+    }
 }
 
 
 Foam::particleCellLocator::particleCellLocator(const fvMesh& mesh)
 :
-    mesh_(mesh)
+    mesh_(mesh),
+    periodic_{0, 0, 0}
 {
     // decomposed cases: a processor's part of a box mesh is a box mesh too
     if (detectTensorGrid())
@@ -155,4 +192,47 @@ Foam::label Foam::particleCellLocator::findCell
         if (celli >= 0) return celli;
     }
     return mesh_.findCell(p, polyMesh::CELL_TETS);
+}
+
+
+bool Foam::particleCellLocator::planeCuts
+(
+    const point& c,
+    const scalar R,
+    bool cut[3],
+    scalar offset[3],
+    label low[3],
+    label high[3]
+) const
+{
+    for (direction d = 0; d < 3; ++d)
+    {
+        const scalarList& g = grid_[d];
+        const label n = g.size() - 1;
+        const label i = interval(g, c[d]);
+        if (i < 0) return false;
+        const bool below = (c[d] - g[i] < R), above = (g[i + 1] - c[d] < R);
+        if (below && above) return false;
+        cut[d] = below || above;
+        low[d] = high[d] = i;
+        offset[d] = 0;
+        if (below)
+        {
+            offset[d] = g[i] - c[d];
+            low[d] = i - 1;
+        }
+        else if (above)
+        {
+            offset[d] = g[i + 1] - c[d];
+            high[d] = i + 1;
+        }
+        if (low[d] < 0 || high[d] == n)
+        {
+            if (periodic_[d] < 0) return false;
+            const bool wrap = (periodic_[d] == 1);
+            if (low[d] < 0) low[d] = wrap ? n - 1 : -1;
+            if (high[d] == n) high[d] = wrap ? 0 : -1;
+        }
+    }
+    return true;
 }

@@ -24,6 +24,35 @@ Foam::voidFractionModels::analytical::analytical
 {}
 
 
+bool Foam::voidFractionModels::analytical::splitOnGrid
+(
+    const point& c,
+    const scalar R
+)
+{
+    bool cut[3];
+    scalar offset[3];
+    label low[3], high[3];
+    if (!locator_.planeCuts(c, R, cut, offset, low, high)) return false;
+
+    scalar piece[8];
+    sphereOverlap::planeSplit(R, offset, cut, piece);
+    const scalar Vp = sphereOverlap::sphereVolume(R);
+    for (int s = 0; s < 8; ++s)
+    {
+        if (piece[s] <= 0) continue;
+        const label i = (s & 1) ? high[0] : low[0];
+        const label j = (s & 2) ? high[1] : low[1];
+        const label k = (s & 4) ? high[2] : low[2];
+        if (i >= 0 && j >= 0 && k >= 0)
+        {
+            weights_.append(locator_.gridCell(i, j, k), piece[s]/Vp);
+        }
+    }
+    return true;
+}
+
+
 void Foam::voidFractionModels::analytical::distribute(const particleData& particles)
 {
     const pointField& x = particles.positions();
@@ -32,6 +61,11 @@ void Foam::voidFractionModels::analytical::distribute(const particleData& partic
     forAll(x, p)
     {
         const label seed = centreCells_[p];
+        if (seed >= 0 && locator_.isTensorGrid() && splitOnGrid(x[p], r[p]))
+        {
+            weights_.endParticle();
+            continue;
+        }
         if (seed >= 0 && overlap_.holdsSphere(seed, x[p], r[p]))
         {
             weights_.append(seed, 1.0);

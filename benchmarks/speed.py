@@ -1,0 +1,59 @@
+#!/usr/bin/python3
+"""Speed of the void fraction models per core (issue: foundation).
+
+A dense polydisperse packing (jittered FCC lattice, radii uniform in
+[0.8, 1] r_max, solid fraction about 0.45) in a box meshed with cells
+3 x the largest diameter: Cartesian (blockMesh) and tetrahedral (each
+hexahedron of the same size split into 6 tetrahedra). demVoidFraction
+times 20 calls after a warm-up; the median is reported, and the ratio of
+analytical to centroid from the same run.
+
+usage: benchmarks/speed.py [N]   (N particles, default 200000)
+"""
+import math
+import os
+import random
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests"))
+from foamCase import ROOT, box_block_mesh, new_case, parse_report, sh, write_dump  # noqa: E402
+
+N = int(sys.argv[1]) if len(sys.argv) > 1 else 200000
+rmax = 0.001
+nn = 2.1 * rmax                       # FCC nearest-neighbour distance
+a = nn * math.sqrt(2)                 # FCC cube edge
+n = max(2, round((N / 4) ** (1 / 3)))
+L = n * a
+rng = random.Random(11)
+centres, radii = [], []
+jit = (nn - 2 * rmax) / 2 * 0.99
+for i in range(n):
+    for j in range(n):
+        for k in range(n):
+            for b in ((0, 0, 0), (0.5, 0.5, 0), (0.5, 0, 0.5), (0, 0.5, 0.5)):
+                c = [(i + b[0] + 0.25) * a, (j + b[1] + 0.25) * a, (k + b[2] + 0.25) * a]
+                centres.append([x + rng.uniform(-jit, jit) / math.sqrt(3) for x in c])
+                radii.append(rng.uniform(0.8, 1.0) * rmax)
+ncell = max(1, round(L / (3 * 2 * rmax)))
+work = os.path.join(ROOT, "build", "benchmarks")
+os.makedirs(work, exist_ok=True)
+dump = os.path.join(work, "packing_%d.dump" % len(radii))
+write_dump(dump, centres, radii)
+solid = sum(4 / 3 * math.pi * r ** 3 for r in radii) / L ** 3
+print("%d particles, solid fraction %.3f, box %.4f m, %d^3 cells of %.2f d_max"
+      % (len(radii), solid, L, ncell, L / ncell / (2 * rmax)))
+
+rows = []
+cart = new_case(os.path.join(work, "cartesian"), box_block_mesh((0, 0, 0), (L, L, L), (ncell,) * 3))
+for model in ("centroid", "analytical"):
+    _, out = sh("demVoidFraction -dump %s -model %s -repeat 20" % (dump, model), cart)
+    rows.append(("cartesian", model, parse_report(out)))
+tet = new_case(os.path.join(work, "tetrahedral"))
+sh("rm -rf constant/polyMesh && /usr/bin/python3 %s/tests/makeTetMesh.py . %d %r 0.0" % (ROOT, ncell, L), tet)
+_, out = sh("demVoidFraction -dump %s -model analytical -repeat 5" % dump, tet)
+rows.append(("tetrahedral", "analytical", parse_report(out)))
+
+print("%-12s %-11s %12s %14s" % ("mesh", "model", "median s", "particles/s"))
+for mesh, model, rep in rows:
+    print("%-12s %-11s %12.5f %14.3e" % (mesh, model, rep["median"], rep["rate"]))
+print("analytical / centroid time on the Cartesian mesh: %.2f" % (rows[1][2]["median"] / rows[0][2]["median"]))

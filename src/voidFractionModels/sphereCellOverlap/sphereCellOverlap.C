@@ -11,6 +11,20 @@ namespace
     {
         return {v.x(), v.y(), v.z()};
     }
+
+    inline bool reaches
+    (
+        const sphereOverlap::vec3& lo,
+        const sphereOverlap::vec3& hi,
+        const sphereOverlap::vec3& c,
+        const double R
+    )
+    {
+        const double dx = std::fmax(std::fmax(lo.x - c.x, c.x - hi.x), 0.0);
+        const double dy = std::fmax(std::fmax(lo.y - c.y, c.y - hi.y), 0.0);
+        const double dz = std::fmax(std::fmax(lo.z - c.z, c.z - hi.z), 0.0);
+        return dx*dx + dy*dy + dz*dz < R*R;
+    }
 }
 
 
@@ -20,6 +34,8 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
     cellMin_(mesh.nCells()),
     cellMax_(mesh.nCells()),
     isBox_(mesh.nCells(), false),
+    faceMin_(mesh.nFaces()),
+    faceMax_(mesh.nFaces()),
     faceNormal_(mesh.nFaces()),
     planarFace_(mesh.nFaces(), true),
     coupledFace_(mesh.nFaces() - mesh.nInternalFaces(), -1)
@@ -33,6 +49,9 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
     {
         const vector n = Sf[facei]/mag(Sf[facei]);
         faceNormal_[facei] = toVec3(n);
+        const boundBox fbb(pts, faces[facei], false);
+        faceMin_[facei] = toVec3(fbb.min());
+        faceMax_[facei] = toVec3(fbb.max());
         const scalar tol = 1e-12*Foam::sqrt(mag(Sf[facei]));
         for (const label pointi : faces[facei])
         {
@@ -114,12 +133,7 @@ bool Foam::sphereCellOverlap::reachesBox
     const scalar R
 ) const
 {
-    const sphereOverlap::vec3& lo = cellMin_[celli];
-    const sphereOverlap::vec3& hi = cellMax_[celli];
-    const scalar dx = max(max(lo.x - c.x(), c.x() - hi.x), 0.0);
-    const scalar dy = max(max(lo.y - c.y(), c.y() - hi.y), 0.0);
-    const scalar dz = max(max(lo.z - c.z(), c.z() - hi.z), 0.0);
-    return dx*dx + dy*dy + dz*dz < R*R;
+    return reaches(cellMin_[celli], cellMax_[celli], toVec3(c), R);
 }
 
 
@@ -143,6 +157,42 @@ bool Foam::sphereCellOverlap::holdsSphere
 }
 
 
+Foam::scalar Foam::sphereCellOverlap::faceCone
+(
+    const label facei,
+    const sphereOverlap::vec3& c,
+    const scalar R
+) const
+{
+    using namespace sphereOverlap;
+    const pointField& pts = mesh_.points();
+    const face& f = mesh_.faces()[facei];
+    const label n = f.size();
+    auto pt = [&](std::size_t i) { return toVec3(pts[f[i]]); };
+    if (!reaches(faceMin_[facei], faceMax_[facei], c, R))
+    {
+        return R*R*R/3.0*polygonSolidAngle(c, pt, n);
+    }
+    if (planarFace_[facei])
+    {
+        return polygonCone(c, R, pt, n, faceNormal_[facei]);
+    }
+    // warped: the fan of triangles around the face centre
+    const vec3 fc = toVec3(mesh_.faceCentres()[facei]);
+    scalar v = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const vec3 tri[3] = {fc, pt(i), pt(i + 1 == n ? 0 : i + 1)};
+        vec3 normal = cross(tri[1] - tri[0], tri[2] - tri[0]);
+        const double a = mag(normal);
+        if (a == 0) continue;
+        normal = (1.0/a)*normal;
+        v += polygonCone(c, R, [&](std::size_t k) { return tri[k]; }, 3, normal);
+    }
+    return v;
+}
+
+
 Foam::scalar Foam::sphereCellOverlap::generalCellVolume
 (
     const label celli,
@@ -150,39 +200,24 @@ Foam::scalar Foam::sphereCellOverlap::generalCellVolume
     const scalar R
 ) const
 {
-    using namespace sphereOverlap;
-    const pointField& pts = mesh_.points();
-    const faceList& faces = mesh_.faces();
-    const vectorField& Cf = mesh_.faceCentres();
+    const label nInternal = mesh_.nInternalFaces();
     scalar v = 0;
     for (const label facei : mesh_.cells()[celli])
     {
-        const face& f = faces[facei];
-        const bool owner = (mesh_.faceOwner()[facei] == celli);
-        const label n = f.size();
-        // outward order: as stored for the owner, reversed for the neighbour
-        auto pt = [&](std::size_t i)
+        const scalar sign = (mesh_.faceOwner()[facei] == celli) ? 1 : -1;
+        if (facei >= nInternal)
         {
-            return toVec3(pts[f[owner ? label(i) : n - 1 - label(i)]]);
-        };
-        if (planarFace_[facei])
-        {
-            const vec3 normal = owner ? faceNormal_[facei] : (-1.0)*faceNormal_[facei];
-            v += polygonCone(c, R, pt, n, normal);
+            v += sign*faceCone(facei, c, R);
+            continue;
         }
-        else
+        label k = doneFaces_.find(facei);
+        if (k < 0)
         {
-            const vec3 fc = toVec3(Cf[facei]);
-            for (label i = 0; i < n; ++i)
-            {
-                const vec3 tri[3] = {fc, pt(i), pt(i + 1 == n ? 0 : i + 1)};
-                vec3 normal = cross(tri[1] - tri[0], tri[2] - tri[0]);
-                const double a = mag(normal);
-                if (a == 0) continue;
-                normal = (1.0/a)*normal;
-                v += polygonCone(c, R, [&](std::size_t k) { return tri[k]; }, 3, normal);
-            }
+            doneFaces_.append(facei);
+            doneValues_.append(faceCone(facei, c, R));
+            k = doneFaces_.size() - 1;
         }
+        v += sign*doneValues_[k];
     }
     return v;
 }
@@ -219,6 +254,9 @@ void Foam::sphereCellOverlap::overlaps
     const scalar shiftTol = 1e-6*R;
 
     queue_.clear();
+    doneFaces_.clear();
+    doneValues_.clear();
+    doneShift_ = Zero;
     auto enqueue = [&](const label celli, const vector& shift)
     {
         for (const visit& v : queue_)
@@ -234,6 +272,12 @@ void Foam::sphereCellOverlap::overlaps
     {
         const label celli = queue_[q].cell;
         const vector shift = queue_[q].shift;
+        if (magSqr(shift - doneShift_) > sqr(shiftTol))
+        {
+            doneFaces_.clear();
+            doneValues_.clear();
+            doneShift_ = shift;
+        }
         const scalar v = cellVolume(celli, c + shift, R);
         if (v > 0)
         {

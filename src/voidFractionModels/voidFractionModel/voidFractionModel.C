@@ -110,8 +110,10 @@ void Foam::voidFractionModel::collectStatistics(const particleData& particles)
     // every processor holds every particle of the step here (the utility
     // reads the whole dump): the per-particle sums are reduced over ranks
     const label n = particles.size();
-    scalarField fractionSum(n);
-    labelList found(n);
+    scalarField& fractionSum = fractionSum_;
+    labelList& found = found_;
+    fractionSum.setSize(n);
+    found.setSize(n);
     forAll(fractionSum, p)
     {
         fractionSum[p] = weights_.sum(p);

@@ -291,12 +291,15 @@ int main()
     // wedge closed form and the plane split against the box formula
     {
         std::uniform_real_distribution<double> W(-1.1*R, 1.1*R);
-        double worstWedge = 0, worstSplit = 0, worstSum = 0;
+        double worstWedge = 0, worstOctant = 0, worstSplit = 0, worstSum = 0;
         for (int k = 0; k < 2000; ++k)
         {
             const double a = W(rng), b = W(rng);
             const double ref = ballBoxVolume({0, 0, 0}, R, {a, b, -2*R}, {2*R, 2*R, 2*R});
             worstWedge = std::max(worstWedge, std::fabs(wedgeVolume(R, a, b) - ref)/V);
+            const double c3 = W(rng);
+            const double refO = ballBoxVolume({0, 0, 0}, R, {a, b, c3}, {2*R, 2*R, 2*R});
+            worstOctant = std::max(worstOctant, std::fabs(octantVolume(R, a, b, c3) - refO)/V);
             const double p[3] = {W(rng), W(rng), W(rng)};
             const bool cut[3] = {k % 2 == 0, k % 3 != 0, k % 5 != 1};
             double piece[8];
@@ -322,6 +325,8 @@ int main()
         std::printf("wedge worst %.2e, split worst %.2e, split sum worst %.2e\n",
                     worstWedge, worstSplit, worstSum);
         near("wedge closed form = box formula (rel. to sphere)", worstWedge, 0, 1e-13);
+        near("octant closed form = box formula (rel. to sphere)", worstOctant, 0, 1e-12);
+        std::printf("octant worst %.2e\n", worstOctant);
         near("plane split pieces = box formula (rel. to sphere)", worstSplit, 0, 1e-13);
         near("plane split pieces sum to the sphere", worstSum, 0, 1e-14);
         near("wedge through the centre is a quarter", wedgeVolume(R, 0, 0), V/4, 1e-15*V);

@@ -19,13 +19,31 @@ namespace
         return Foam::scalarList(u);
     }
 
-    Foam::label interval(const Foam::scalarList& g, double x)
+    Foam::label searchInterval(const Foam::scalarList& g, double x)
     {
         if (x < g.first() || x > g.last()) return -1;
         const auto it = std::upper_bound(g.begin(), g.end(), x);
         const Foam::label i = Foam::label(it - g.begin()) - 1;
         return std::min(i, g.size() - 2);
     }
+}
+
+
+Foam::label Foam::particleCellLocator::interval
+(
+    const direction d,
+    const scalar x
+) const
+{
+    const scalarList& g = grid_[d];
+    if (invSpacing_[d] == 0) return searchInterval(g, x);
+    if (x < g.first() || x > g.last()) return -1;
+    const label n = g.size() - 1;
+    label i = min(max(label((x - g.first())*invSpacing_[d]), 0), n - 1);
+    // the same interval the planes themselves give, whatever the rounding
+    while (i > 0 && x < g[i]) --i;
+    while (i < n - 1 && x >= g[i + 1]) ++i;
+    return i;
 }
 
 
@@ -47,6 +65,7 @@ bool Foam::particleCellLocator::detectTensorGrid()
     if (ok)
     {
         ijkCell_.setSize(nx*ny*nz, -1);
+        cellIjk_.setSize(nx*ny*nz, -1);
         forAll(cells, celli)
         {
             if (cells[celli].size() != 6) { ok = false; break; }
@@ -56,9 +75,9 @@ bool Foam::particleCellLocator::detectTensorGrid()
                 ok = false; break;
             }
             const point c = bb.centre();
-            const label i = interval(grid_[0], c.x());
-            const label j = interval(grid_[1], c.y());
-            const label k = interval(grid_[2], c.z());
+            const label i = searchInterval(grid_[0], c.x());
+            const label j = searchInterval(grid_[1], c.y());
+            const label k = searchInterval(grid_[2], c.z());
             // the cell must span exactly one interval in each direction
             if
             (
@@ -70,16 +89,29 @@ bool Foam::particleCellLocator::detectTensorGrid()
                 ok = false; break;
             }
             ijkCell_[i + nx*(j + ny*k)] = celli;
+            cellIjk_[celli] = i + nx*(j + ny*k);
         }
     }
     if (!ok)
     {
         ijkCell_.clear();
+        cellIjk_.clear();
         for (auto& g : grid_) g.clear();
     }
     else
     {
         detectPeriodicEnds();
+        for (direction d = 0; d < 3; ++d)
+        {
+            const scalarList& g = grid_[d];
+            const scalar h = (g.last() - g.first())/(g.size() - 1);
+            bool uniform = true;
+            for (label i = 1; i < g.size(); ++i)
+            {
+                uniform = uniform && mag(g[i] - g[i - 1] - h) < 1e-9*h;
+            }
+            invSpacing_[d] = uniform ? 1/h : 0;
+        }
     }
     return ok;
 }
@@ -119,6 +151,7 @@ void Foam::particleCellLocator::detectPeriodicEnds()
 Foam::particleCellLocator::particleCellLocator(const fvMesh& mesh)
 :
     mesh_(mesh),
+    invSpacing_{0, 0, 0},
     periodic_{0, 0, 0}
 {
     // decomposed cases: a processor's part of a box mesh is a box mesh too
@@ -179,9 +212,9 @@ Foam::label Foam::particleCellLocator::findCell
 {
     if (isTensorGrid())
     {
-        const label i = interval(grid_[0], p.x());
-        const label j = interval(grid_[1], p.y());
-        const label k = interval(grid_[2], p.z());
+        const label i = interval(0, p.x());
+        const label j = interval(1, p.y());
+        const label k = interval(2, p.z());
         if (i < 0 || j < 0 || k < 0) return -1;
         const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1;
         return ijkCell_[i + nx*(j + ny*k)];
@@ -197,6 +230,7 @@ Foam::label Foam::particleCellLocator::findCell
 
 bool Foam::particleCellLocator::planeCuts
 (
+    const label centreCell,
     const point& c,
     const scalar R,
     bool cut[3],
@@ -205,12 +239,14 @@ bool Foam::particleCellLocator::planeCuts
     label high[3]
 ) const
 {
+    const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1;
+    const label ijk = cellIjk_[centreCell];
+    const label index[3] = {ijk % nx, (ijk/nx) % ny, ijk/(nx*ny)};
     for (direction d = 0; d < 3; ++d)
     {
         const scalarList& g = grid_[d];
         const label n = g.size() - 1;
-        const label i = interval(g, c[d]);
-        if (i < 0) return false;
+        const label i = index[d];
         const bool below = (c[d] - g[i] < R), above = (g[i + 1] - c[d] < R);
         if (below && above) return false;
         cut[d] = below || above;

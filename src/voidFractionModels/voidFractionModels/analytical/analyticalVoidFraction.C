@@ -26,6 +26,7 @@ Foam::voidFractionModels::analytical::analytical
 
 bool Foam::voidFractionModels::analytical::splitOnGrid
 (
+    const label centreCell,
     const point& c,
     const scalar R
 )
@@ -33,7 +34,7 @@ bool Foam::voidFractionModels::analytical::splitOnGrid
     bool cut[3];
     scalar offset[3];
     label low[3], high[3];
-    if (!locator_.planeCuts(c, R, cut, offset, low, high)) return false;
+    if (!locator_.planeCuts(centreCell, c, R, cut, offset, low, high)) return false;
 
     scalar piece[8];
     sphereOverlap::planeSplit(R, offset, cut, piece);
@@ -61,7 +62,7 @@ void Foam::voidFractionModels::analytical::distribute(const particleData& partic
     forAll(x, p)
     {
         const label seed = centreCells_[p];
-        if (seed >= 0 && locator_.isTensorGrid() && splitOnGrid(x[p], r[p]))
+        if (seed >= 0 && locator_.isTensorGrid() && splitOnGrid(seed, x[p], r[p]))
         {
             weights_.endParticle();
             continue;

@@ -7,11 +7,6 @@
 
 namespace
 {
-    inline sphereOverlap::vec3 toVec3(const Foam::vector& v)
-    {
-        return {v.x(), v.y(), v.z()};
-    }
-
     inline bool reaches
     (
         const sphereOverlap::vec3& lo,
@@ -144,16 +139,27 @@ bool Foam::sphereCellOverlap::holdsSphere
     const scalar R
 ) const
 {
+    return planesCrossed(celli, c, R) == 0;
+}
+
+
+Foam::label Foam::sphereCellOverlap::planesCrossed
+(
+    const label celli,
+    const point& c,
+    const scalar R
+) const
+{
     const vectorField& Cf = mesh_.faceCentres();
     const labelList& own = mesh_.faceOwner();
+    label n = 0;
     for (const label facei : mesh_.cells()[celli])
     {
-        if (!planarFace_[facei]) return false;
         scalar s = sphereOverlap::dot(toVec3(Cf[facei] - c), faceNormal_[facei]);
         if (own[facei] != celli) s = -s;
-        if (s < R) return false;
+        if (s < R || !planarFace_[facei]) ++n;
     }
-    return true;
+    return n;
 }
 
 
@@ -247,58 +253,27 @@ void Foam::sphereCellOverlap::overlaps
     DynamicList<scalar>& volumes
 ) const
 {
-    const labelList& own = mesh_.faceOwner();
-    const labelList& nei = mesh_.faceNeighbour();
-    const vectorField& Cf = mesh_.faceCentres();
-    const label nInternal = mesh_.nInternalFaces();
     const scalar shiftTol = 1e-6*R;
-
-    queue_.clear();
     doneFaces_.clear();
     doneValues_.clear();
     doneShift_ = Zero;
-    auto enqueue = [&](const label celli, const vector& shift)
-    {
-        for (const visit& v : queue_)
+    forEachReachedCell
+    (
+        c, R, seeds,
+        [&](const label celli, const vector& shift)
         {
-            if (v.cell == celli && magSqr(v.shift - shift) < sqr(shiftTol)) return;
-        }
-        if (reachesBox(celli, c + shift, R)) queue_.append(visit{celli, shift});
-    };
-    for (const label seed : seeds) enqueue(seed, Zero);
-
-    // queue_ grows while it is read: a breadth-first walk
-    for (label q = 0; q < queue_.size(); ++q)
-    {
-        const label celli = queue_[q].cell;
-        const vector shift = queue_[q].shift;
-        if (magSqr(shift - doneShift_) > sqr(shiftTol))
-        {
-            doneFaces_.clear();
-            doneValues_.clear();
-            doneShift_ = shift;
-        }
-        const scalar v = cellVolume(celli, c + shift, R);
-        if (v > 0)
-        {
-            cells.append(celli);
-            volumes.append(v);
-        }
-        for (const label facei : mesh_.cells()[celli])
-        {
-            if (facei < nInternal)
+            if (magSqr(shift - doneShift_) > sqr(shiftTol))
             {
-                enqueue(own[facei] == celli ? nei[facei] : own[facei], shift);
+                doneFaces_.clear();
+                doneValues_.clear();
+                doneShift_ = shift;
             }
-            else
+            const scalar v = cellVolume(celli, c + shift, R);
+            if (v > 0)
             {
-                const label nbrFace = coupledFace_[facei - nInternal];
-                if (nbrFace >= 0)
-                {
-                    // the image enters through nbrFace: shift by the translation
-                    enqueue(own[nbrFace], shift + Cf[nbrFace] - Cf[facei]);
-                }
+                cells.append(celli);
+                volumes.append(v);
             }
         }
-    }
+    );
 }

@@ -119,13 +119,8 @@ void Foam::voidFractionModel::collectStatistics(const particleData& particles)
         fractionSum[p] = weights_.sum(p);
         found[p] = (centreCells_[p] >= 0);
     }
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(fractionSum, plusEqOp<scalar>());
-        Pstream::listCombineScatter(fractionSum);
-        Pstream::listCombineGather(found, plusEqOp<label>());
-        Pstream::listCombineScatter(found);
-    }
+    combineOverRanks(fractionSum, plusEqOp<scalar>());
+    combineOverRanks(found, plusEqOp<label>());
     const scalarField& r = particles.radii();
     for (label p = 0; p < n; ++p)
     {
@@ -161,16 +156,13 @@ void Foam::voidFractionModel::update(const particleData& particles)
 
     stats_ = statistics();
     stats_.nParticles = n;
-    solid_ = 0;
     const scalarField& r = particles.radii();
-    for (label p = 0; p < n; ++p)
+    particleVolumes_.setSize(n);
+    forAll(r, p)
     {
-        const scalar Vp = 4.0/3.0*constant::mathematical::pi*pow3(r[p]);
-        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
-        {
-            solid_[weights_.cell(k)] += weights_.fraction(k)*Vp;
-        }
+        particleVolumes_[p] = 4.0/3.0*constant::mathematical::pi*pow3(r[p]);
     }
+    spread(particleVolumes_, solid_);
     collectStatistics(particles);
 
     stats_.movedVolume = limitSolidFraction();
@@ -179,13 +171,63 @@ void Foam::voidFractionModel::update(const particleData& particles)
     scalarField& alpha = voidFraction_.primitiveFieldRef();
     forAll(alpha, celli)
     {
-        alpha[celli] = 1 - solid_[celli]/V[celli];
+        // solid volumes are sums of non-negative parts; a smoothing solve
+        // may leave round-off below zero, which must not lift alpha above 1
+        alpha[celli] = min(1 - solid_[celli]/V[celli], scalar(1));
     }
     voidFraction_.correctBoundaryConditions();
     stats_.solidVolume = gSum(solid_);
     stats_.movedVolume = returnReduce(stats_.movedVolume, sumOp<scalar>());
     stats_.minVoidFraction = gMin(alpha);
     stats_.maxVoidFraction = gMax(alpha);
+}
+
+
+void Foam::voidFractionModel::spread
+(
+    const scalarField& perParticle,
+    scalarField& perCell
+)
+{
+    perCell.setSize(mesh_.nCells());
+    perCell = 0;
+    forAll(perParticle, p)
+    {
+        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+        {
+            perCell[weights_.cell(k)] += weights_.fraction(k)*perParticle[p];
+        }
+    }
+    smoothVolumes(perCell);
+}
+
+
+Foam::scalar Foam::voidFractionModel::positiveCoeff(const word& key) const
+{
+    if (!coeffs_.found(key))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "missing keyword " << key << " in " << coeffs_.name()
+            << exit(FatalIOError);
+    }
+    return positiveCoeff(key, 1);
+}
+
+
+Foam::scalar Foam::voidFractionModel::positiveCoeff
+(
+    const word& key,
+    const scalar deflt
+) const
+{
+    const scalar value = coeffs_.lookupOrDefault<scalar>(key, deflt);
+    if (!(value > 0) || !std::isfinite(value))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << key << " must be a positive number, got " << value
+            << " in " << coeffs_.name() << exit(FatalIOError);
+    }
+    return value;
 }
 
 

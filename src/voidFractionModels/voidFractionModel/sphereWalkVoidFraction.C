@@ -1,0 +1,101 @@
+#include "sphereWalkVoidFraction.H"
+
+
+Foam::sphereWalkVoidFraction::sphereWalkVoidFraction
+(
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    voidFractionModel(modelType, dict, mesh),
+    overlap_(mesh)
+{}
+
+
+bool Foam::sphereWalkVoidFraction::splitOnGrid
+(
+    const label centreCell,
+    const point& c,
+    const scalar R,
+    const label maxCuts
+)
+{
+    bool cut[3];
+    scalar offset[3];
+    label low[3], high[3];
+    if (!locator_.planeCuts(centreCell, c, R, cut, offset, low, high)) return false;
+    if (cut[0] + cut[1] + cut[2] > maxCuts) return false;
+
+    scalar piece[8];
+    sphereOverlap::planeSplit(R, offset, cut, piece);
+    const scalar Vp = sphereOverlap::sphereVolume(R);
+    for (int s = 0; s < 8; ++s)
+    {
+        if (piece[s] <= 0) continue;
+        const label i = (s & 1) ? high[0] : low[0];
+        const label j = (s & 2) ? high[1] : low[1];
+        const label k = (s & 4) ? high[2] : low[2];
+        if (i >= 0 && j >= 0 && k >= 0)
+        {
+            weights_.append(locator_.gridCell(i, j, k), piece[s]/Vp);
+        }
+    }
+    return true;
+}
+
+
+void Foam::sphereWalkVoidFraction::findSeeds
+(
+    const label centreCell,
+    const point& c,
+    const scalar R
+)
+{
+    seeds_.clear();
+    if (centreCell >= 0) seeds_.append(centreCell);
+    else overlap_.boundarySeeds(c, R, seeds_);
+}
+
+
+void Foam::sphereWalkVoidFraction::exactVolumes(const point& c, const scalar R)
+{
+    cells_.clear();
+    volumes_.clear();
+    if (seeds_.size()) overlap_.overlaps(c, R, seeds_, cells_, volumes_);
+}
+
+
+void Foam::sphereWalkVoidFraction::appendVolumes(const scalar R)
+{
+    const scalar Vp = sphereOverlap::sphereVolume(R);
+    forAll(cells_, k)
+    {
+        weights_.append(cells_[k], volumes_[k]/Vp);
+    }
+}
+
+
+void Foam::sphereWalkVoidFraction::appendLatticeSplit
+(
+    const label centreCell,
+    const point& c,
+    const scalar R,
+    const sphereOverlap::lattice& L,
+    const sphereOverlap::sphereLatticeTable* table
+)
+{
+    cells_.clear();
+    counts_.clear();
+    const label total =
+        seeds_.size() ? overlap_.latticeCounts(c, R, L, seeds_, cells_, counts_, table) : 0;
+    if (total == 0)
+    {
+        if (centreCell >= 0) weights_.append(centreCell, 1.0);
+        return;
+    }
+    forAll(cells_, k)
+    {
+        weights_.append(cells_[k], scalar(counts_[k])/total);
+    }
+}

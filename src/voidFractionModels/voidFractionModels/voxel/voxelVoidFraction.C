@@ -1,0 +1,79 @@
+#include "voxelVoidFraction.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace voidFractionModels
+{
+    defineTypeNameAndDebug(voxel, 0);
+    addToRunTimeSelectionTable(voidFractionModel, voxel, dictionary);
+}
+}
+
+
+Foam::voidFractionModels::voxel::voxel
+(
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    sphereWalkVoidFraction(modelType, dict, mesh),
+    origin_(mesh.bounds().min()),
+    voxelSize_(Zero),
+    voxelsPerDiameter_(0)
+{
+    const wordList keys({"voxelsPerSide", "voxelSize", "voxelsPerDiameter"});
+    label nGiven = 0;
+    for (const word& key : keys) nGiven += coeffs_.found(key);
+    if (nGiven > 1)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "give one of " << keys << " in " << coeffs_.name()
+            << ", not several" << exit(FatalIOError);
+    }
+    if (coeffs_.found("voxelSize"))
+    {
+        const scalar h = positiveCoeff("voxelSize");
+        voxelSize_ = vector(h, h, h);
+    }
+    else if (coeffs_.found("voxelsPerDiameter"))
+    {
+        voxelsPerDiameter_ = positiveCoeff("voxelsPerDiameter");
+    }
+    else
+    {
+        voxelSize_ = mesh.bounds().span()/positiveCoeff("voxelsPerSide", 50);
+    }
+    Info<< "voxel: voxel size ";
+    if (voxelsPerDiameter_ > 0) Info<< "diameter/" << voxelsPerDiameter_ << endl;
+    else Info<< voxelSize_ << " m" << endl;
+}
+
+
+void Foam::voidFractionModels::voxel::distribute(const particleData& particles)
+{
+    const pointField& x = particles.positions();
+    const scalarField& r = particles.radii();
+
+    forAll(x, p)
+    {
+        const label seed = centreCells_[p];
+        if (seed >= 0 && overlap_.holdsSphere(seed, x[p], r[p]))
+        {
+            // all its voxels are in this cell: the share is exactly 1
+            weights_.append(seed, 1.0);
+        }
+        else
+        {
+            sphereOverlap::lattice L{{origin_.x(), origin_.y(), origin_.z()}, {0, 0, 0}};
+            const vector h = (voxelsPerDiameter_ > 0)
+                ? vector::one*2*r[p]/voxelsPerDiameter_
+                : voxelSize_;
+            L.h = {h.x(), h.y(), h.z()};
+            findSeeds(seed, x[p], r[p]);
+            appendLatticeSplit(seed, x[p], r[p], L);
+        }
+        weights_.endParticle();
+    }
+}

@@ -202,6 +202,16 @@ void Foam::voidFractionModel::spread
 }
 
 
+void Foam::voidFractionModel::distributeToCentreCells()
+{
+    for (const label celli : centreCells_)
+    {
+        if (celli >= 0) weights_.append(celli, 1.0);
+        weights_.endParticle();
+    }
+}
+
+
 Foam::scalar Foam::voidFractionModel::positiveCoeff(const word& key) const
 {
     if (!coeffs_.found(key))

@@ -22,11 +22,7 @@ Foam::voidFractionModels::centroid::centroid
 {}
 
 
-void Foam::voidFractionModels::centroid::distribute(const particleData& particles)
+void Foam::voidFractionModels::centroid::distribute(const particleData&)
 {
-    forAll(centreCells_, p)
-    {
-        if (centreCells_[p] >= 0) weights_.append(centreCells_[p], 1.0);
-        weights_.endParticle();
-    }
+    distributeToCentreCells();
 }

@@ -1,0 +1,142 @@
+#include "diffusionVoidFraction.H"
+#include "addToRunTimeSelectionTable.H"
+#include "laplacianScheme.H"
+#include "fvm.H"
+#include "fvc.H"
+#include "zeroGradientFvPatchFields.H"
+#include "IStringStream.H"
+
+namespace Foam
+{
+namespace voidFractionModels
+{
+    defineTypeNameAndDebug(diffusion, 0);
+    addToRunTimeSelectionTable(voidFractionModel, diffusion, dictionary);
+}
+}
+
+
+Foam::dictionary Foam::voidFractionModels::diffusion::defaultSolver()
+{
+    dictionary d;
+    d.add("solver", "PCG");
+    d.add("preconditioner", "DIC");
+    d.add("tolerance", 1e-12);
+    d.add("relTol", 0.0);
+    d.add("maxIter", 1000);
+    return d;
+}
+
+
+Foam::voidFractionModels::diffusion::diffusion
+(
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    analytical(modelType, dict, mesh),
+    fromAnalytical_(false),
+    nSteps_(label(positiveCoeff("nSteps", 1))),
+    laplacianScheme_
+    (
+        coeffs_.lookupOrDefault<string>("laplacianScheme", "Gauss linear uncorrected")
+    ),
+    solverDict_(coeffs_.subOrEmptyDict("solver")),
+    D_
+    (
+        IOobject("voidfractionDiffusivity", mesh.time().timeName(), mesh,
+                 IOobject::NO_READ, IOobject::NO_WRITE, false),
+        mesh,
+        dimensionedScalar(dimViscosity, Zero)
+    ),
+    phi_
+    (
+        IOobject("voidfractionSmoothing", mesh.time().timeName(), mesh,
+                 IOobject::NO_READ, IOobject::NO_WRITE, false),
+        mesh,
+        dimensionedScalar(dimless, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    )
+{
+    const word initial(coeffs_.lookupOrDefault<word>("initial", "centroid"));
+    if (initial != "centroid" && initial != "analytical")
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "initial must be centroid or analytical, got " << initial
+            << " in " << coeffs_.name() << exit(FatalIOError);
+    }
+    fromAnalytical_ = (initial == "analytical");
+    if (scalar(nSteps_) != coeffs_.lookupOrDefault<scalar>("nSteps", 1))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "nSteps must be a whole number in " << coeffs_.name()
+            << exit(FatalIOError);
+    }
+    if (coeffs_.found("bandwidth") && coeffs_.found("coefficient"))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "give bandwidth or coefficient in " << coeffs_.name()
+            << ", not both" << exit(FatalIOError);
+    }
+    if (solverDict_.empty()) solverDict_ = defaultSolver();
+
+    if (coeffs_.found("bandwidth"))
+    {
+        D_ = dimensionedScalar("D", dimViscosity, sqr(positiveCoeff("bandwidth"))/4);
+    }
+    else
+    {
+        const scalar a = positiveCoeff("coefficient", 0.12);
+        volScalarField D
+        (
+            IOobject("D", mesh.time().timeName(), mesh,
+                     IOobject::NO_READ, IOobject::NO_WRITE, false),
+            mesh,
+            dimensionedScalar(dimViscosity, Zero),
+            zeroGradientFvPatchScalarField::typeName
+        );
+        D.primitiveFieldRef() = a*pow(mesh.V().field(), 2.0/3.0);
+        D.correctBoundaryConditions();
+        D_ = fvc::interpolate(D);
+    }
+
+    // check the scheme now, not at the first step
+    IStringStream is(laplacianScheme_);
+    fv::laplacianScheme<scalar, scalar>::New(mesh, is);
+}
+
+
+void Foam::voidFractionModels::diffusion::distribute(const particleData& particles)
+{
+    if (fromAnalytical_) analytical::distribute(particles);
+    else distributeToCentreCells();
+}
+
+
+void Foam::voidFractionModels::diffusion::smoothVolumes(scalarField& cellVolumes)
+{
+    const scalarField& V = mesh_.V();
+    phi_.primitiveFieldRef() = cellVolumes/V;
+    phi_.correctBoundaryConditions();
+
+    IStringStream is(laplacianScheme_);
+    tmp<fv::laplacianScheme<scalar, scalar>> scheme
+    (
+        fv::laplacianScheme<scalar, scalar>::New(mesh_, is)
+    );
+    const dimensionedScalar dTau("dTau", dimTime, 1.0/nSteps_);
+    for (label step = 0; step < nSteps_; ++step)
+    {
+        const volScalarField phiOld("phiOld", phi_);
+        fvScalarMatrix eq
+        (
+            fvm::Sp(1/dTau, phi_) - scheme.ref().fvmLaplacian(D_, phi_)
+         == phiOld/dTau
+        );
+        eq.solve(solverDict_);
+        // the solution sets the fluxes; the update from them is conservative
+        phi_ = phiOld + dTau*scheme.ref().fvcLaplacian(D_, phi_);
+    }
+    cellVolumes = phi_.primitiveField()*V;
+}

@@ -36,6 +36,14 @@ def new_case(path, block_mesh=None, coupling="voidFractionModel analytical;\nalp
     return path
 
 
+def tet_case(path, n=6, length=0.03, jitter=0.2, coupling=None):
+    """A case on the cube [0, length]^3 meshed with jittered tetrahedra."""
+    new_case(path, coupling=coupling) if coupling else new_case(path)
+    shutil.rmtree(os.path.join(path, "constant", "polyMesh"), ignore_errors=True)
+    sh("/usr/bin/python3 %s/tests/makeTetMesh.py . %d %r %r" % (ROOT, n, length, jitter), path)
+    return path
+
+
 def set_coupling(path, body):
     with open(os.path.join(path, "constant", "couplingProperties"), "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class dictionary; object couplingProperties; }\n")
@@ -109,6 +117,17 @@ def cell_volumes(case):
     os.makedirs(os.path.join(case, "0"), exist_ok=True)
     sh("postProcess -func writeCellVolumes -time 0", case)
     return read_scalar_field(os.path.join(case, "0", "V"))
+
+
+def cell_centres(case):
+    """Cell centres (list of (x, y, z)) from postProcess writeCellCentres."""
+    os.makedirs(os.path.join(case, "0"), exist_ok=True)
+    sh("postProcess -func writeCellCentres -time 0", case)
+    text = open(os.path.join(case, "0", "C")).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<vector>\s*(\d+)\s*\((.*?)\)\s*;", text, re.S)
+    vals = [tuple(float(v) for v in t.split()) for t in re.findall(r"\(([^()]*)\)", m.group(2))]
+    assert len(vals) == int(m.group(1))
+    return vals
 
 
 def parse_report(out):

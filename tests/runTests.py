@@ -8,56 +8,11 @@ import re
 import shutil
 import sys
 
+import checks
+from checks import WORK, check, field_checks, near, run_model, serial_vs_parallel
 from foamCase import (ROOT, box_block_mesh, cell_volumes, new_case, parse_report,
                       random_spheres, read_scalar_field, set_coupling, sh, sphere_volume,
-                      write_dump)
-
-WORK = os.path.join(ROOT, "build", "tests")
-passed = failed = 0
-
-
-def check(name, ok, detail=""):
-    global passed, failed
-    if ok:
-        passed += 1
-        print("  ok   %s %s" % (name, detail))
-    else:
-        failed += 1
-        print("  FAIL %s %s" % (name, detail))
-
-
-def near(name, got, want, tol):
-    ok = got is not None and math.isfinite(got) and abs(got - want) <= tol
-    check(name, ok, "(got %.17g, want %.17g, tol %.3g)" % (got if got is not None else float("nan"), want, tol))
-
-
-def run_model(case, dump, model, extra=""):
-    rc, out = sh("demVoidFraction -dump %s -model %s %s" % (dump, model, extra), case, check=False)
-    if rc != 0:
-        print(out[-600:])
-    return rc, out
-
-
-def field_checks(label, case, centres, radii, model, alpha_min=0.05):
-    """Run the model; the field's solid volume must equal the sum of the
-    sphere volumes (all spheres lie wholly inside the mesh or wrap through
-    cyclic patches), and the void fraction lie in [alphaMin, 1]."""
-    dump = os.path.join(case, "particles.dump")
-    write_dump(dump, centres, radii)
-    rc, out = run_model(case, dump, model)
-    check("%s %s runs" % (label, model), rc == 0)
-    if rc != 0:
-        return None
-    alpha = read_scalar_field(os.path.join(case, "0", "voidfraction"))
-    V = cell_volumes(case)
-    solid = sum((1 - a) * v for a, v in zip(alpha, V))
-    want = sum(sphere_volume(r) for r in radii)
-    near("%s %s solid volume = sum of sphere volumes (rel)" % (label, model), solid / want, 1.0, 1e-12)
-    check("%s %s void fraction in [alphaMin, 1]" % (label, model),
-          all(alpha_min - 1e-12 <= a <= 1 + 1e-12 for a in alpha),
-          "(min %.6f max %.6f)" % (min(alpha), max(alpha)))
-    return alpha
-
+                      tet_case, write_dump)
 
 L = 0.03
 LO, HI = (0, 0, 0), (L, L, L)
@@ -89,9 +44,7 @@ def test_meshes():
     for model in ("centroid", "analytical"):
         field_checks("sheared", case, c, r, model)
 
-    case = new_case(os.path.join(WORK, "tet"))
-    shutil.rmtree(os.path.join(case, "constant", "polyMesh"), ignore_errors=True)
-    sh("/usr/bin/python3 %s/tests/makeTetMesh.py . 6 %r 0.2" % (ROOT, L), case)
+    case = tet_case(os.path.join(WORK, "tet"))
     for model in ("centroid", "analytical"):
         field_checks("tetrahedral", case, *spheres, model)
 
@@ -172,26 +125,11 @@ def test_parallel():
         if mesh == "block":
             new_case(case, box_block_mesh(LO, HI, (10, 10, 10)))
         else:
-            new_case(case)
-            shutil.rmtree(os.path.join(case, "constant", "polyMesh"), ignore_errors=True)
-            sh("/usr/bin/python3 %s/tests/makeTetMesh.py . 6 %r 0.2" % (ROOT, L), case)
+            tet_case(case)
         c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=7)
         write_dump(os.path.join(case, "p.dump"), c, r)
         for model in ("centroid", "analytical"):
-            sh("rm -rf processor* 0", case)
-            run_model(case, "p.dump", model)
-            serial = read_scalar_field(os.path.join(case, "0", "voidfraction"))
-            sh("rm -rf 0 && decomposePar -force", case)
-            rc, out = sh("mpirun -np 2 demVoidFraction -parallel -dump p.dump -model %s" % model,
-                         case, check=False)
-            check("%s %s runs on 2 ranks" % (name, model), rc == 0)
-            if rc != 0:
-                print(out[-600:])
-                continue
-            sh("reconstructPar -withZero -fields '(voidfraction)'", case)
-            par = read_scalar_field(os.path.join(case, "0", "voidfraction"))
-            near("%s %s serial = parallel, max |d alpha|" % (name, model),
-                 max(abs(x - y) for x, y in zip(serial, par)), 0, 1e-12)
+            serial_vs_parallel(name, case, "p.dump", model, 1e-12)
 
 
 def test_alpha_min():
@@ -240,19 +178,9 @@ def test_bad_input():
 
 
 def main():
-    os.makedirs(WORK, exist_ok=True)
-    only = sys.argv[1:]
-    tests = [test_closed_forms, test_meshes, test_fast_against_general, test_cyclic,
-             test_alpha_min, test_parallel, test_bad_input]
-    for t in tests:
-        if only and t.__name__ not in only:
-            continue
-        try:
-            t()
-        except Exception as e:   # a crashed test is a failed test
-            check(t.__name__ + " completed", False, str(e)[-2000:])
-    print("models: %d passed, %d failed" % (passed, failed))
-    return 1 if failed else 0
+    checks.run([test_closed_forms, test_meshes, test_fast_against_general, test_cyclic,
+                test_alpha_min, test_parallel, test_bad_input], sys.argv[1:])
+    return checks.summary("models")
 
 
 if __name__ == "__main__":

@@ -1,6 +1,8 @@
 #include "diffusionVoidFraction.H"
 #include "addToRunTimeSelectionTable.H"
 #include "laplacianScheme.H"
+#include "snGradScheme.H"
+#include "surfaceInterpolationScheme.H"
 #include "fvm.H"
 #include "fvc.H"
 #include "zeroGradientFvPatchFields.H"
@@ -101,9 +103,26 @@ Foam::voidFractionModels::diffusion::diffusion
         D_ = fvc::interpolate(D);
     }
 
-    // check the scheme now, not at the first step
+    // check the scheme now, against OpenFOAM's tables (its own message for
+    // a scheme read from a string names no file)
     IStringStream is(laplacianScheme_);
-    fv::laplacianScheme<scalar, scalar>::New(mesh, is);
+    const word gauss(is), interpolation(is), snGrad(is);
+    if
+    (
+        gauss != "Gauss"
+     || !surfaceInterpolationScheme<scalar>::MeshConstructorTablePtr_->found(interpolation)
+     || !fv::snGradScheme<scalar>::MeshConstructorTablePtr_->found(snGrad)
+    )
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "laplacianScheme \"" << laplacianScheme_.c_str() << "\" in "
+            << coeffs_.name() << " is not Gauss <interpolation> <snGrad>;"
+            << " valid interpolations: "
+            << surfaceInterpolationScheme<scalar>::MeshConstructorTablePtr_->sortedToc()
+            << ", valid snGrad schemes: "
+            << fv::snGradScheme<scalar>::MeshConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
 }
 
 

@@ -1,0 +1,244 @@
+#!/usr/bin/python3
+"""Tests of the voxel, hybrid, kernel and diffusion models on real meshes.
+References: sums of sphere volumes, the analytical model's exact overlap
+(itself tested against closed forms and numerical integration), an
+independent Python evaluation of the Gaussian kernel (seed Eq. 8), the
+centroid split, and the serial run for the parallel one."""
+import math
+import os
+import re
+import sys
+
+import checks
+from checks import WORK, check, field_checks, near, run_model, serial_vs_parallel
+from foamCase import (box_block_mesh, cell_centres, cell_volumes, new_case, parse_report,
+                      random_spheres, read_scalar_field, set_coupling, sh, sphere_volume,
+                      tet_case, write_dump)
+
+L = 0.03
+LO, HI = (0, 0, 0), (L, L, L)
+MODELS = ("voxel", "hybrid", "kernel", "diffusion")
+
+
+def solid_of(case, V):
+    alpha = read_scalar_field(os.path.join(case, "0", "voidfraction"))
+    return [(1 - a) * v for a, v in zip(alpha, V)]
+
+
+def model_solid(case, dump, model, V, coeffs=""):
+    """Solid volume per cell of model with the given coefficient entries."""
+    set_coupling(case, "voidFractionModel %s;\nalphaMin 0.01;\n%sCoeffs { %s }\n" % (model, model, coeffs))
+    rc, out = run_model(case, dump, model)
+    if rc != 0:
+        raise RuntimeError("%s {%s} failed" % (model, coeffs))
+    return solid_of(case, V)
+
+
+def relative_l1(a, b):
+    return sum(abs(x - y) for x, y in zip(a, b)) / sum(abs(y) for y in b)
+
+
+def test_conservation():
+    print("conservation and bounds on a Cartesian, a graded and a tetrahedral mesh")
+    spheres = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=11)
+    cases = {
+        "cartesian": new_case(os.path.join(WORK, "est-cartesian"), box_block_mesh(LO, HI, (10, 10, 10))),
+        "graded": new_case(os.path.join(WORK, "est-graded"),
+                           box_block_mesh(LO, HI, (12, 9, 10), grading=(4, 0.3, 2))),
+        "tetrahedral": tet_case(os.path.join(WORK, "est-tet")),
+    }
+    for name, case in cases.items():
+        for model in MODELS:
+            field_checks(name, case, *spheres, model, alpha_min=0.05)
+
+
+def test_convergence():
+    print("voxel and hybrid converge to analytical as the resolution grows")
+    case = new_case(os.path.join(WORK, "est-converge"), box_block_mesh(LO, HI, (8, 8, 8)))
+    c, r = random_spheres(400, 0.0008, 0.0016, LO, HI, seed=12)   # many spheres cut by two or three planes
+    write_dump(os.path.join(case, "p.dump"), c, r)
+    V = cell_volumes(case)
+    exact = model_solid(case, "p.dump", "analytical", V)
+    for model, key in (("voxel", "voxelsPerDiameter"), ("hybrid", "subGridResolution")):
+        ns = (5, 10, 20, 40)
+        errs = [relative_l1(model_solid(case, "p.dump", model, V, "%s %d;" % (key, n)), exact) for n in ns]
+        slope = math.log(errs[0] / errs[-1]) / math.log(ns[-1] / ns[0])
+        print("    %s: L1 error %s at %s per diameter, order %.2f" %
+              (model, " ".join("%.2e" % e for e in errs), ns, slope))
+        # a cell face through the lattice miscounts up to a layer of voxels:
+        # first order in the voxel size
+        check("%s error falls with resolution at order >= 0.9" % model, slope >= 0.9, "(order %.2f)" % slope)
+        check("%s error at 40 per diameter below 1.5 %%" % model, errs[-1] < 1.5e-2, "(%.2e)" % errs[-1])
+        check("%s error falls at every refinement" % model,
+              all(b < a for a, b in zip(errs, errs[1:])), str(["%.2e" % e for e in errs]))
+
+
+def test_vanishing_bandwidth():
+    print("kernel and diffusion with a vanishing bandwidth become the centroid split")
+    case = new_case(os.path.join(WORK, "est-vanish"), box_block_mesh(LO, HI, (10, 10, 10)))
+    c, r = random_spheres(800, 0.0004, 0.0012, LO, HI, seed=13)
+    write_dump(os.path.join(case, "p.dump"), c, r)
+    V = cell_volumes(case)
+    pcm = model_solid(case, "p.dump", "centroid", V)
+    for model, coeffs, tol in (("kernel", "bandwidth 1e-5;", 1e-12),
+                               ("diffusion", "bandwidth 1e-9;", 1e-12)):
+        got = model_solid(case, "p.dump", model, V, coeffs)
+        near("%s { %s }: = centroid (L1 rel)" % (model, coeffs), relative_l1(got, pcm), 0, tol)
+    # and they move towards it as b shrinks
+    for model, key in (("kernel", "bandwidthOverCellSize"), ("diffusion", "coefficient")):
+        errs = [relative_l1(model_solid(case, "p.dump", model, V, "%s %g;" % (key, b)), pcm)
+                for b in (0.4, 0.2, 0.1)]
+        check("%s approaches centroid as %s shrinks" % (model, key),
+              errs[0] > errs[1] > errs[2], str(["%.2e" % e for e in errs]))
+
+
+def gaussian_reference(centres, V, c, b, rc, walls):
+    """Seed Eq. 8 evaluated independently: V_cell exp(-|x - c|^2/b^2) per
+    cell, cube cut-off rc, plus mirror images across the given axis planes
+    (axis, position) within rc, normalised."""
+    images = [tuple(c)]
+    for axis, pos in walls:
+        if abs(c[axis] - pos) < rc:
+            images += [tuple(2 * pos - p[axis] if k == axis else p[k] for k in range(3)) for p in images]
+    w = []
+    for x, v in zip(centres, V):
+        s = 0.0
+        for im in images:
+            d = [x[k] - im[k] for k in range(3)]
+            if all(abs(t) <= rc for t in d):
+                s += math.exp(-(d[0] ** 2 + d[1] ** 2 + d[2] ** 2) / b ** 2)
+        w.append(v * s)
+    total = sum(w)
+    return [x / total for x in w]
+
+
+def test_kernel_reference():
+    print("kernel against an independent evaluation of the seed's Gaussian, walls reflected")
+    R = 0.0005
+    b, cutoff = 0.004, 3
+    walls = [(0, 0.0), (0, L), (1, 0.0), (1, L), (2, 0.0), (2, L)]
+    for name, case in (
+        ("cartesian (1D factors)", new_case(os.path.join(WORK, "est-kref"),
+                                            box_block_mesh(LO, HI, (10, 10, 10), grading=(2, 1, 1)))),
+        ("tetrahedral (walk)", tet_case(os.path.join(WORK, "est-kref-tet")))):
+        V = cell_volumes(case)
+        C = cell_centres(case)
+        for where, c in (("by a corner", (0.002, 0.0035, 0.029)), ("inside", (0.014, 0.016, 0.015))):
+            write_dump(os.path.join(case, "one.dump"), [c], [R])
+            got = model_solid(case, "one.dump", "kernel", V, "bandwidth %r; cutoff %d;" % (b, cutoff))
+            want = gaussian_reference(C, V, c, b, cutoff * b, walls)
+            Vp = sphere_volume(R)
+            near("%s, particle %s: cell volumes = reference (max rel to particle)" % (name, where),
+                 max(abs(g / Vp - w) for g, w in zip(got, want)), 0, 1e-12)
+        # without reflection the wall cells get less
+        write_dump(os.path.join(case, "one.dump"), [(0.002, 0.0035, 0.029)], [R])
+        flat = model_solid(case, "one.dump", "kernel", V, "bandwidth %r; reflectAtWalls false;" % b)
+        want_flat = gaussian_reference(C, V, (0.002, 0.0035, 0.029), b, cutoff * b, [])
+        near("%s, no reflection: = reference without images" % name,
+             max(abs(g / sphere_volume(R) - w) for g, w in zip(flat, want_flat)), 0, 1e-12)
+
+
+def test_diffusion_is_gaussian():
+    print("diffusion over pseudo-time T = kernel with b = sqrt(4 D T), one particle in a large box")
+    n, h = 41, 0.001
+    case = new_case(os.path.join(WORK, "est-gauss"), box_block_mesh((0, 0, 0), (n * h,) * 3, (n, n, n)))
+    c = 20.5 * h
+    write_dump(os.path.join(case, "one.dump"), [(c, c, c)], [0.0004])
+    V = cell_volumes(case)
+    C = cell_centres(case)
+    devs = []
+    for cells in (3, 6):
+        b = cells * h
+        kern = model_solid(case, "one.dump", "kernel", V, "bandwidth %r; cutoff 5;" % b)
+        # implicit Euler converges to the heat kernel as 1/nSteps
+        diff = model_solid(case, "one.dump", "diffusion", V, "bandwidth %r; nSteps 800;" % b)
+        devs.append(max(abs(x - y) for x, y in zip(kern, diff)) / max(kern))
+        print("    b = %d cells: max |diffusion - kernel| / peak = %.4f" % (cells, devs[-1]))
+        # the second moment of exp(-r^2/b^2) is 3 b^2 / 2, for both
+        for name, s in (("kernel", kern), ("diffusion", diff)):
+            m2 = sum(v * ((x - c) ** 2 + (y - c) ** 2 + (z - c) ** 2) for v, (x, y, z) in zip(s, C)) / sum(s)
+            near("b = %d cells: %s second moment / (3 b^2 / 2)" % (cells, name), m2 / (1.5 * b * b), 1, 0.01)
+    # the grid's heat kernel differs from the sampled Gaussian by O((h/b)^2)
+    check("diffusion = Gaussian kernel within 4 % of the peak at b = 6 cells", devs[1] < 0.04, "(%.4f)" % devs[1])
+    check("the difference falls like (h/b)^2 (ratio >= 3 from b = 3 to 6 cells)",
+          devs[0] / devs[1] >= 3, "(%.2f)" % (devs[0] / devs[1]))
+
+
+def test_cyclic():
+    print("cyclic wrap: spheres and kernels beyond one side land on the other")
+    cyc = {"xmin": "type cyclic; neighbourPatch xmax;", "xmax": "type cyclic; neighbourPatch xmin;"}
+    case = new_case(os.path.join(WORK, "est-cyclic"), box_block_mesh(LO, HI, (10, 10, 10), patches=cyc))
+    c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=14, periodic_axes=(0,))
+    for model in MODELS:
+        field_checks("cyclic", case, c, r, model)
+    # a particle on the periodic plane: the first and last layers mirror each other
+    V = cell_volumes(case)
+    write_dump(os.path.join(case, "one.dump"), [(0.0, 0.0145, 0.0155)], [0.001])
+    for model in MODELS:
+        # diffusion from the analytical split: the centroid puts it on one side
+        s = model_solid(case, "one.dump", model, V, "initial analytical;" if model == "diffusion" else "")
+        layer = lambda i: sum(s[i + 10 * (j + 10 * k)] for j in range(10) for k in range(10))
+        near("%s: a particle on the cyclic plane puts equal volume on both sides (rel)" % model,
+             layer(0) / layer(9), 1, 1e-9)
+
+
+def test_parallel():
+    print("serial against mpirun -np 2")
+    for name in ("cartesian", "tetrahedral"):
+        case = os.path.join(WORK, "est-parallel-" + name)
+        if name == "cartesian":
+            new_case(case, box_block_mesh(LO, HI, (10, 10, 10)))
+        else:
+            tet_case(case)
+        c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=15)
+        write_dump(os.path.join(case, "p.dump"), c, r)
+        for model in MODELS:
+            # the diffusion solve converges to 1e-12, not to round-off
+            serial_vs_parallel(name, case, "p.dump", model, 1e-9 if model == "diffusion" else 1e-12)
+
+
+def test_alpha_min():
+    print("alphaMin: excess volume moved, not deleted")
+    case = new_case(os.path.join(WORK, "est-alphaMin"), box_block_mesh(LO, HI, (10, 10, 10)),
+                    coupling="voidFractionModel centroid;\nalphaMin 0.4;\n")
+    h = L / 10
+    c, r = random_spheres(60, 0.0008, 0.0009, (4 * h,) * 3, (5 * h,) * 3, seed=8, gap=False)
+    for model in MODELS:
+        field_checks("crowded cell", case, c, r, model, alpha_min=0.4)
+
+
+def test_bad_coefficients():
+    print("bad coefficients: clear errors")
+    case = new_case(os.path.join(WORK, "est-bad"), box_block_mesh(LO, HI, (4, 4, 4)))
+    write_dump(os.path.join(case, "ok.dump"), [(0.01, 0.01, 0.01)], [0.001])
+    bad = [
+        ("kernel", "bandwidth -1e-3;", "bandwidth must be a positive number"),
+        ("kernel", "bandwidth 1e-3; bandwidthOverCellSize 0.4;", "not both"),
+        ("kernel", "cutoff 0;", "cutoff must be a positive number"),
+        ("voxel", "voxelsPerSide 0;", "voxelsPerSide must be a positive number"),
+        ("voxel", "voxelSize 1e-4; voxelsPerDiameter 10;", "not several"),
+        ("hybrid", "subGridResolution 0;", "subGridResolution must be a positive number"),
+        ("hybrid", "subGridResolution 2.5;", "whole number"),
+        ("diffusion", "initial pcm;", "initial must be centroid or analytical"),
+        ("diffusion", "coefficient -0.1;", "coefficient must be a positive number"),
+        ("diffusion", "nSteps 0;", "nSteps must be a positive number"),
+        ("diffusion", "laplacianScheme \"Gauss cubicSpline corrected\";", "cubicSpline"),
+    ]
+    for model, coeffs, needle in bad:
+        set_coupling(case, "voidFractionModel %s;\n%sCoeffs { %s }\n" % (model, model, coeffs))
+        rc, out = sh("demVoidFraction -dump ok.dump", case, check=False)
+        ours = "laplacianScheme" not in coeffs    # that message is OpenFOAM's own
+        check("%s { %s }: error says '%s'%s" % (model, coeffs, needle, " and names the dictionary" if ours else ""),
+              rc != 0 and needle in out and (not ours or model + "Coeffs" in out)
+              and "Segmentation" not in out)
+
+
+def main():
+    checks.run([test_conservation, test_convergence, test_vanishing_bandwidth, test_kernel_reference,
+                test_diffusion_is_gaussian, test_cyclic, test_alpha_min, test_parallel,
+                test_bad_coefficients], sys.argv[1:])
+    return checks.summary("estimators")
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,12 +1,14 @@
 #!/usr/bin/python3
-"""Speed of the void fraction models per core (issue: foundation).
+"""Speed of the six void fraction models per core.
 
 A dense polydisperse packing (jittered FCC lattice, radii uniform in
 [0.8, 1] r_max, solid fraction about 0.45) in a box meshed with cells
 3 x the largest diameter: Cartesian (blockMesh) and tetrahedral (each
 hexahedron of the same size split into 6 tetrahedra). demVoidFraction
-times 20 calls after a warm-up; the median is reported, and the ratio of
-analytical to centroid from the same run.
+times repeated calls after a warm-up; the median is reported, and each
+model's time relative to centroid on the same mesh in the same run. Every
+model runs with its defaults; voxel also at the issue's 50 voxels per sample
+side and at 10 voxels per particle diameter.
 
 usage: benchmarks/speed.py [N]   (N particles, default 200000)
 """
@@ -16,7 +18,7 @@ import random
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests"))
-from foamCase import ROOT, box_block_mesh, new_case, parse_report, sh, write_dump  # noqa: E402
+from foamCase import ROOT, box_block_mesh, new_case, parse_report, set_coupling, sh, write_dump  # noqa: E402
 
 N = int(sys.argv[1]) if len(sys.argv) > 1 else 200000
 rmax = 0.001
@@ -43,17 +45,38 @@ solid = sum(4 / 3 * math.pi * r ** 3 for r in radii) / L ** 3
 print("%d particles, solid fraction %.3f, box %.4f m, %d^3 cells of %.2f d_max"
       % (len(radii), solid, L, ncell, L / ncell / (2 * rmax)))
 
+CONFIGS = [
+    ("centroid", "centroid", ""),
+    ("analytical", "analytical", ""),
+    ("voxel 50/side", "voxel", "voxelsPerSide 50;"),
+    ("voxel 10/diam", "voxel", "voxelsPerDiameter 10;"),
+    ("hybrid", "hybrid", ""),
+    ("kernel", "kernel", ""),
+    ("diffusion", "diffusion", ""),
+]
+
+
+def run(case, label, model, coeffs, repeat):
+    set_coupling(case, "voidFractionModel %s;\n%sCoeffs { %s }\n" % (model, model, coeffs))
+    _, out = sh("demVoidFraction -dump %s -repeat %d" % (dump, repeat), case)
+    rep = parse_report(out)
+    rep["conservation"] = abs(rep["solid"] / rep["meshed"] - 1)
+    return rep
+
+
 rows = []
 cart = new_case(os.path.join(work, "cartesian"), box_block_mesh((0, 0, 0), (L, L, L), (ncell,) * 3))
-for model in ("centroid", "analytical"):
-    _, out = sh("demVoidFraction -dump %s -model %s -repeat 20" % (dump, model), cart)
-    rows.append(("cartesian", model, parse_report(out)))
+for label, model, coeffs in CONFIGS:
+    rows.append(("cartesian", label, run(cart, label, model, coeffs, 20)))
 tet = new_case(os.path.join(work, "tetrahedral"))
 sh("rm -rf constant/polyMesh && /usr/bin/python3 %s/tests/makeTetMesh.py . %d %r 0.0" % (ROOT, ncell, L), tet)
-_, out = sh("demVoidFraction -dump %s -model analytical -repeat 5" % dump, tet)
-rows.append(("tetrahedral", "analytical", parse_report(out)))
+for label, model, coeffs in CONFIGS:
+    if label != "voxel 50/side":
+        rows.append(("tetrahedral", label, run(tet, label, model, coeffs, 3)))
 
-print("%-12s %-11s %12s %14s" % ("mesh", "model", "median s", "particles/s"))
-for mesh, model, rep in rows:
-    print("%-12s %-11s %12.5f %14.3e" % (mesh, model, rep["median"], rep["rate"]))
-print("analytical / centroid time on the Cartesian mesh: %.2f" % (rows[1][2]["median"] / rows[0][2]["median"]))
+base = {mesh: rep["median"] for mesh, label, rep in rows if label == "centroid"}
+print("| mesh | model | median time per call (s) | particles/s | time / centroid | conservation |")
+print("|---|---|---|---|---|---|")
+for mesh, label, rep in rows:
+    print("| %s | %s | %.5f | %.3e | %.1f | %.0e |" % (mesh, label, rep["median"], rep["rate"],
+                                                     rep["median"] / base[mesh], rep["conservation"]))

@@ -33,7 +33,9 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
     faceMax_(mesh.nFaces()),
     faceNormal_(mesh.nFaces()),
     planarFace_(mesh.nFaces(), true),
-    coupledFace_(mesh.nFaces() - mesh.nInternalFaces(), -1)
+    coupledFace_(mesh.nFaces() - mesh.nInternalFaces(), -1),
+    queuedAt_(mesh.nCells(), 0),
+    walkCount_(0)
 {
     const pointField& pts = mesh.points();
     const faceList& faces = mesh.faces();

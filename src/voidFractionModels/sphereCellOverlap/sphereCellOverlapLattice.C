@@ -34,35 +34,25 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
 ) const
 {
     using namespace sphereOverlap;
+    const vec3 c3 = toVec3(c);
+
+    // box cells count in closed form; the others are collected and every
+    // lattice point of the sphere is located among them once
+    general_.clear();
     forEachReachedCell
     (
         c, R, seeds,
         [&](const label celli, const vector& shift)
         {
+            if (!isBox_[celli])
+            {
+                general_.append(visit{celli, shift});
+                return;
+            }
             const vec3 cs = toVec3(c + shift);
-            const lattice Ls{L.o + toVec3(shift), L.h};
-            long n = 0;
-            if (isBox_[celli] && table)
-            {
-                n = table->count(cs, R, cellMin_[celli], cellMax_[celli]);
-            }
-            else if (isBox_[celli])
-            {
-                n = latticeCount(cs, R, Ls, cellMin_[celli], cellMax_[celli]);
-            }
-            else
-            {
-                // the box is only a filter here (closed on both sides)
-                const vec3 hi = cellMax_[celli] + vec3{L.h.x, L.h.y, L.h.z};
-                forEachLatticePoint
-                (
-                    cs, R, Ls, cellMin_[celli], hi,
-                    [&](const vec3& p)
-                    {
-                        if (contains(celli, point(p.x, p.y, p.z))) ++n;
-                    }
-                );
-            }
+            const long n = table
+                ? table->count(cs, R, cellMin_[celli], cellMax_[celli])
+                : latticeCount(cs, R, lattice{L.o + toVec3(shift), L.h}, cellMin_[celli], cellMax_[celli]);
             if (n)
             {
                 cells.append(celli);
@@ -70,5 +60,49 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
             }
         }
     );
-    return label(table ? table->total() : latticeCount(toVec3(c), R, L));
+
+    if (general_.size())
+    {
+        generalCounts_.setSize(general_.size());
+        generalCounts_ = 0;
+        const label nGeneral = general_.size();
+        label last = 0;
+        const vec3 margin{R + L.h.x, R + L.h.y, R + L.h.z};
+        forEachLatticePoint
+        (
+            c3, R, L, c3 - margin, c3 + margin,
+            [&](const vec3& p)
+            {
+                // consecutive points mostly share a cell: try the last one first
+                for (label t = 0; t < nGeneral; ++t)
+                {
+                    const label k = (last + t) % nGeneral;
+                    const visit& v = general_[k];
+                    const vec3 x = p + toVec3(v.shift);
+                    const vec3& lo = cellMin_[v.cell];
+                    const vec3& hi = cellMax_[v.cell];
+                    if
+                    (
+                        x.x >= lo.x && x.x <= hi.x && x.y >= lo.y && x.y <= hi.y
+                     && x.z >= lo.z && x.z <= hi.z
+                     && contains(v.cell, point(x.x, x.y, x.z))
+                    )
+                    {
+                        ++generalCounts_[k];
+                        last = k;
+                        return;
+                    }
+                }
+            }
+        );
+        forAll(general_, k)
+        {
+            if (generalCounts_[k])
+            {
+                cells.append(general_[k].cell);
+                counts.append(generalCounts_[k]);
+            }
+        }
+    }
+    return label(table ? table->total() : latticeCount(c3, R, L));
 }

@@ -4,7 +4,8 @@ void Foam::sphereCellOverlap::forEachReachedCell
     const point& c,
     const scalar R,
     const labelUList& seeds,
-    Visitor&& visitor
+    Visitor&& visitor,
+    const bool cube
 ) const
 {
     const labelList& own = mesh_.faceOwner();
@@ -14,13 +15,36 @@ void Foam::sphereCellOverlap::forEachReachedCell
     const scalar shiftTol = 1e-6*R;
 
     queue_.clear();
+    ++walkCount_;
+    auto reached = [&](const label celli, const vector& shift)
+    {
+        if (!cube) return reachesBox(celli, c + shift, R);
+        const sphereOverlap::vec3& lo = cellMin_[celli];
+        const sphereOverlap::vec3& hi = cellMax_[celli];
+        const point x = c + shift;
+        return lo.x <= x.x() + R && hi.x >= x.x() - R
+            && lo.y <= x.y() + R && hi.y >= x.y() - R
+            && lo.z <= x.z() + R && hi.z >= x.z() - R;
+    };
     auto enqueue = [&](const label celli, const vector& shift)
     {
-        for (const visit& v : queue_)
+        const bool unshifted = (magSqr(shift) < sqr(shiftTol));
+        if (unshifted)
         {
-            if (v.cell == celli && magSqr(v.shift - shift) < sqr(shiftTol)) return;
+            if (queuedAt_[celli] == walkCount_) return;
         }
-        if (reachesBox(celli, c + shift, R)) queue_.append(visit{celli, shift});
+        else
+        {
+            for (const visit& v : queue_)
+            {
+                if (v.cell == celli && magSqr(v.shift - shift) < sqr(shiftTol)) return;
+            }
+        }
+        if (reached(celli, shift))
+        {
+            if (unshifted) queuedAt_[celli] = walkCount_;
+            queue_.append(visit{celli, shift});
+        }
     };
     for (const label seed : seeds) enqueue(seed, Zero);
 

@@ -219,7 +219,7 @@ void Foam::voidFractionModels::kernel::walkWeights
     findSeeds(seed, c, sqrt(3.0)*rc);
     overlap_.forEachReachedCell
     (
-        c, sqrt(3.0)*rc, seeds_,
+        c, rc, seeds_,
         [&](const label celli, const vector& shift)
         {
             const point x = C[celli] - shift;
@@ -236,7 +236,8 @@ void Foam::voidFractionModels::kernel::walkWeights
             sum += w;
             if (celli == seed && magSqr(shift) == 0) weights_.setFraction(k0, w);
             else if (w > 0) weights_.append(celli, w);
-        }
+        },
+        true
     );
     sums_[p] = sum;
 }

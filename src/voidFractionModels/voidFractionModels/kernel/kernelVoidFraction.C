@@ -103,8 +103,8 @@ void Foam::voidFractionModels::kernel::findImages(const point& c, const scalar r
 {
     images_.clear();
     images_.append(c);
-    DynamicList<label> used;            // wall of each image's last mirror
-    used.append(-1);
+    imageWall_.clear();
+    imageWall_.append(-1);
     label nNear = 0;
     forAll(walls_, w)
     {
@@ -116,10 +116,10 @@ void Foam::voidFractionModels::kernel::findImages(const point& c, const scalar r
         for (label i = 0; i < m; ++i)
         {
             // no image of an image across the opposite wall of a slab
-            if (used[i] >= 0 && (walls_[used[i]].normal & P.normal) < -0.5) continue;
-            const point& x = images_[i];
+            if (imageWall_[i] >= 0 && (walls_[imageWall_[i]].normal & P.normal) < -0.5) continue;
+            const point x = images_[i];
             images_.append(x - 2*((P.normal & x) - P.offset)*P.normal);
-            used.append(w);
+            imageWall_.append(w);
         }
     }
 }

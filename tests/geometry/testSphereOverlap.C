@@ -4,6 +4,7 @@
 // area is integrated over z by adaptive Gauss-Kronrod.
 #include "sphereOverlap.H"
 #include "testHarness.H"
+#include "referenceArea.H"
 
 #include <algorithm>
 #include <functional>
@@ -15,68 +16,8 @@ using testHarness::near;
 
 namespace
 {
-struct p2 { double x, y; };
-
-// Area of the disk (radius rho, centre 0) ∩ convex polygon (any order).
-double diskPolygonArea(double rho, std::vector<p2> poly)
-{
-    if (rho <= 0 || poly.size() < 3) return 0;
-    std::vector<double> xs = {-rho, rho};
-    const std::size_t n = poly.size();
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        const p2 a = poly[i], b = poly[(i + 1) % n];
-        xs.push_back(a.x);
-        // crossings of the edge's line with the circle
-        const double dx = b.x - a.x, dy = b.y - a.y;
-        const double A = dx*dx + dy*dy, B = 2*(a.x*dx + a.y*dy), C = a.x*a.x + a.y*a.y - rho*rho;
-        const double disc = B*B - 4*A*C;
-        if (A > 0 && disc >= 0)
-        {
-            for (double s : {-1.0, 1.0})
-            {
-                const double t = (-B + s*std::sqrt(disc))/(2*A);
-                if (t >= 0 && t <= 1) xs.push_back(a.x + t*dx);
-            }
-        }
-    }
-    std::sort(xs.begin(), xs.end());
-    auto chord = [&](double x, double& lo, double& hi)
-    {
-        lo = 1e300; hi = -1e300;
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            const p2 a = poly[i], b = poly[(i + 1) % n];
-            if ((a.x - x)*(b.x - x) <= 0 && a.x != b.x)
-            {
-                const double y = a.y + (b.y - a.y)*(x - a.x)/(b.x - a.x);
-                lo = std::min(lo, y); hi = std::max(hi, y);
-            }
-        }
-        return lo <= hi;
-    };
-    auto G = [&](double x)   // antiderivative of sqrt(rho^2 - x^2)
-    {
-        const double xc = std::max(-rho, std::min(rho, x));
-        return 0.5*(xc*std::sqrt(rho*rho - xc*xc) + rho*rho*std::asin(xc/rho));
-    };
-    double area = 0;
-    for (std::size_t k = 0; k + 1 < xs.size(); ++k)
-    {
-        const double a = std::max(xs[k], -rho), b = std::min(xs[k + 1], rho);
-        if (b <= a) continue;
-        const double m = 0.5*(a + b);
-        double lo, hi, loA, hiA, loB, hiB;
-        if (!chord(m, lo, hi)) continue;
-        const double s = std::sqrt(rho*rho - m*m);
-        if (std::min(s, hi) <= std::max(-s, lo)) continue;
-        chord(a, loA, hiA); chord(b, loB, hiB);
-        // upper and lower limits are each either the circle or one edge line
-        area += (hi < s) ? 0.5*(hiA + hiB)*(b - a) : G(b) - G(a);
-        area -= (lo > -s) ? 0.5*(loA + loB)*(b - a) : -(G(b) - G(a));
-    }
-    return area;
-}
+using reference::p2;
+using reference::diskPolygonArea;
 
 // Slice of a convex polyhedron (vertices, edges) at height z, centred on c.
 std::vector<p2> slice(const std::vector<vec3>& v, const std::vector<std::pair<int,int>>& e,

@@ -112,7 +112,25 @@ int main()
                 worstTotal = std::max(worstTotal, std::labs(table.total() - latticeCount(c, R, L)));
             }
         }
-        near("sub-grid table count = point scan (n = 1, 5, 20, 33)", double(worstTable), 0, 0);
+        // 2D: one layer through the centre in the flat direction
+        for (int flat = 0; flat < 3; ++flat)
+        {
+            const int n = 17;
+            const sphereLatticeTable table(n, flat);
+            for (int t = 0; t < 200; ++t)
+            {
+                const double R = 0.1 + u(rng);
+                const vec3 c{u(rng), u(rng), u(rng)};
+                vec3 h{2*R/n, 2*R/n, 2*R/n};
+                (flat == 0 ? h.x : flat == 1 ? h.y : h.z) = 2*R;
+                const lattice L{{c.x - R, c.y - R, c.z - R}, h};
+                const vec3 lo{c.x - 1.5*R*u(rng), c.y - 1.5*R*u(rng), c.z - 1.5*R*u(rng)};
+                const vec3 hi{lo.x + 2*R*u(rng), lo.y + 2*R*u(rng), lo.z + 2*R*u(rng)};
+                worstTable = std::max(worstTable, std::labs(table.count(c, R, lo, hi) - scanCount(c, R, L, lo, hi)));
+                worstTotal = std::max(worstTotal, std::labs(table.total() - latticeCount(c, R, L)));
+            }
+        }
+        near("sub-grid table count = point scan (n = 1, 5, 20, 33; flat 17 x 17 in x, y, z)", double(worstTable), 0, 0);
         near("sub-grid table total = row count", double(worstTotal), 0, 0);
     }
     return testHarness::summary("lattice");

@@ -35,7 +35,9 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
     planarFace_(mesh.nFaces(), true),
     coupledFace_(mesh.nFaces() - mesh.nInternalFaces(), -1),
     queuedAt_(mesh.nCells(), 0),
-    walkCount_(0)
+    walkCount_(0),
+    emptyDir_(-1),
+    thickness_(0)
 {
     const pointField& pts = mesh.points();
     const faceList& faces = mesh.faces();
@@ -159,6 +161,7 @@ Foam::label Foam::sphereCellOverlap::planesCrossed
     {
         scalar s = sphereOverlap::dot(toVec3(Cf[facei] - c), faceNormal_[facei]);
         if (own[facei] != celli) s = -s;
+        if (emptyDir_ >= 0 && emptyFace_[facei]) continue;
         if (s < R || !planarFace_[facei]) ++n;
     }
     return n;
@@ -238,6 +241,10 @@ Foam::scalar Foam::sphereCellOverlap::cellVolume
     const scalar R
 ) const
 {
+    if (emptyDir_ >= 0)
+    {
+        return sectionVolume(celli, c, R);
+    }
     if (isBox_[celli])
     {
         return sphereOverlap::ballBoxVolume(toVec3(c), R, cellMin_[celli], cellMax_[celli]);
@@ -277,5 +284,44 @@ void Foam::sphereCellOverlap::overlaps
                 volumes.append(v);
             }
         }
+    );
+}
+
+
+void Foam::sphereCellOverlap::setTwoDimensional(const direction d, const scalar thickness)
+{
+    emptyDir_ = d;
+    thickness_ = thickness;
+    emptyFace_.setSize(mesh_.nFaces(), false);
+    sectionFace_.setSize(mesh_.nCells(), -1);
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (!isA<emptyPolyPatch>(pp)) continue;
+        forAll(pp, i)
+        {
+            const label facei = pp.start() + i;
+            emptyFace_[facei] = true;
+            sectionFace_[mesh_.faceOwner()[facei]] = facei;
+        }
+    }
+}
+
+
+Foam::scalar Foam::sphereCellOverlap::sectionVolume
+(
+    const label celli,
+    const point& c,
+    const scalar R
+) const
+{
+    const direction e1 = (emptyDir_ + 1) % 3, e2 = (emptyDir_ + 2) % 3;
+    const pointField& pts = mesh_.points();
+    const face& f = mesh_.faces()[sectionFace_[celli]];
+    return thickness_*sphereOverlap::diskPolygonArea
+    (
+        {c[e1], c[e2]},
+        R,
+        [&](std::size_t i) { return sphereOverlap::vec2{pts[f[i]][e1], pts[f[i]][e2]}; },
+        f.size()
     );
 }

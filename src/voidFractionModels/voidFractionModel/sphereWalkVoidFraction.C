@@ -10,7 +10,9 @@ Foam::sphereWalkVoidFraction::sphereWalkVoidFraction
 :
     voidFractionModel(modelType, dict, mesh),
     overlap_(mesh)
-{}
+{
+    if (twoD_) overlap_.setTwoDimensional(emptyDir_, thickness_);
+}
 
 
 bool Foam::sphereWalkVoidFraction::splitOnGrid
@@ -21,6 +23,7 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     const label maxCuts
 )
 {
+    if (twoD_) return false;     // the one-go split is for spheres
     bool cut[3];
     scalar offset[3];
     label low[3], high[3];
@@ -29,7 +32,7 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
 
     scalar piece[8];
     sphereOverlap::planeSplit(R, offset, cut, piece);
-    const scalar Vp = sphereOverlap::sphereVolume(R);
+    const scalar Vp = particleVolume(R);
     for (int s = 0; s < 8; ++s)
     {
         if (piece[s] <= 0) continue;
@@ -68,7 +71,7 @@ void Foam::sphereWalkVoidFraction::exactVolumes(const point& c, const scalar R)
 
 void Foam::sphereWalkVoidFraction::appendVolumes(const scalar R)
 {
-    const scalar Vp = sphereOverlap::sphereVolume(R);
+    const scalar Vp = particleVolume(R);
     forAll(cells_, k)
     {
         weights_.append(cells_[k], volumes_[k]/Vp);

@@ -20,6 +20,10 @@ Foam::voidFractionModel::voidFractionModel
     coeffs_(dict.subOrEmptyDict(modelType + "Coeffs")),
     alphaMin_(dict.lookupOrDefault<scalar>("alphaMin", 0.1)),
     locator_(mesh),
+    twoD_(dict.lookupOrDefault<bool>("twoDimensional", false)),
+    emptyDir_(0),
+    slabMid_(0),
+    thickness_(0),
     solid_(mesh.nCells(), 0),
     voidFraction_
     (
@@ -41,6 +45,25 @@ Foam::voidFractionModel::voidFractionModel
         FatalIOErrorInFunction(dict)
             << "alphaMin must lie in [0, 1), got " << alphaMin_
             << exit(FatalIOError);
+    }
+    if (twoD_)
+    {
+        if (mesh.nSolutionD() != 2)
+        {
+            FatalIOErrorInFunction(dict)
+                << "twoDimensional is set but the mesh solves in "
+                << mesh.nSolutionD() << " directions: it must be one cell thick"
+                << " with empty patches front and back" << exit(FatalIOError);
+        }
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (mesh.solutionD()[d] == -1) emptyDir_ = d;
+        }
+        const boundBox& bb = mesh.bounds();
+        thickness_ = bb.span()[emptyDir_];
+        slabMid_ = 0.5*(bb.min()[emptyDir_] + bb.max()[emptyDir_]);
+        Info<< "voidFractionModel: 2D, particles are disks through the slab of thickness "
+            << thickness_ << " m normal to " << vector::componentNames[emptyDir_] << endl;
     }
 }
 
@@ -124,7 +147,7 @@ void Foam::voidFractionModel::collectStatistics(const particleData& particles)
     const scalarField& r = particles.radii();
     for (label p = 0; p < n; ++p)
     {
-        const scalar Vp = 4.0/3.0*constant::mathematical::pi*pow3(r[p]);
+        const scalar Vp = particleVolume(r[p]);
         stats_.particleVolume += Vp;
         stats_.meshedVolume += fractionSum[p]*Vp;
         if (!found[p]) ++stats_.nOutside;
@@ -136,7 +159,12 @@ void Foam::voidFractionModel::collectStatistics(const particleData& particles)
 void Foam::voidFractionModel::update(const particleData& particles)
 {
     const label n = particles.size();
-    const pointField& x = particles.positions();
+    const pointField& x = twoD_ ? projected_ : particles.positions();
+    if (twoD_)
+    {
+        projected_ = particles.positions();
+        projected_.replace(emptyDir_, slabMid_);
+    }
 
     // hints from the previous step are valid while the particle list is
     if (centreCells_.size() != n) centreCells_.setSize(n, -1);
@@ -146,7 +174,7 @@ void Foam::voidFractionModel::update(const particleData& particles)
     }
 
     weights_.clear();
-    distribute(particles);
+    distribute(x, particles.radii());
     if (weights_.nParticles() != n)
     {
         FatalErrorInFunction
@@ -160,7 +188,7 @@ void Foam::voidFractionModel::update(const particleData& particles)
     particleVolumes_.setSize(n);
     forAll(r, p)
     {
-        particleVolumes_[p] = 4.0/3.0*constant::mathematical::pi*pow3(r[p]);
+        particleVolumes_[p] = particleVolume(r[p]);
     }
     spread(particleVolumes_, solid_);
     collectStatistics(particles);

@@ -23,10 +23,12 @@ Foam::voidFractionModels::analytical::analytical
 {}
 
 
-void Foam::voidFractionModels::analytical::distribute(const particleData& particles)
+void Foam::voidFractionModels::analytical::distribute
+(
+    const pointField& x,
+    const scalarField& r
+)
 {
-    const pointField& x = particles.positions();
-    const scalarField& r = particles.radii();
 
     forAll(x, p)
     {

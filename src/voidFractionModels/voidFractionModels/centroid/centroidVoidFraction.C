@@ -22,7 +22,7 @@ Foam::voidFractionModels::centroid::centroid
 {}
 
 
-void Foam::voidFractionModels::centroid::distribute(const particleData&)
+void Foam::voidFractionModels::centroid::distribute(const pointField&, const scalarField&)
 {
     distributeToCentreCells();
 }

@@ -89,7 +89,7 @@ Foam::voidFractionModels::diffusion::diffusion
     }
     else
     {
-        const scalar a = positiveCoeff("coefficient", 0.12);
+        const scalar a = positiveCoeff("coefficient", seedDefault(0.12, 0.17));
         volScalarField D
         (
             IOobject("D", mesh.time().timeName(), mesh,
@@ -98,7 +98,7 @@ Foam::voidFractionModels::diffusion::diffusion
             dimensionedScalar(dimViscosity, Zero),
             zeroGradientFvPatchScalarField::typeName
         );
-        D.primitiveFieldRef() = a*pow(mesh.V().field(), 2.0/3.0);
+        forAll(D, celli) D[celli] = a*sqr(cellSize(celli));
         D.correctBoundaryConditions();
         D_ = fvc::interpolate(D);
     }
@@ -126,9 +126,13 @@ Foam::voidFractionModels::diffusion::diffusion
 }
 
 
-void Foam::voidFractionModels::diffusion::distribute(const particleData& particles)
+void Foam::voidFractionModels::diffusion::distribute
+(
+    const pointField& x,
+    const scalarField& r
+)
 {
-    if (fromAnalytical_) analytical::distribute(particles);
+    if (fromAnalytical_) analytical::distribute(x, r);
     else distributeToCentreCells();
 }
 

@@ -19,9 +19,9 @@ Foam::voidFractionModels::hybrid::hybrid
 )
 :
     sphereWalkVoidFraction(modelType, dict, mesh),
-    resolution_(label(positiveCoeff("subGridResolution", 20)))
+    resolution_(label(positiveCoeff("subGridResolution", seedDefault(20, 50))))
 {
-    if (scalar(resolution_) != coeffs_.lookupOrDefault<scalar>("subGridResolution", 20))
+    if (scalar(resolution_) != coeffs_.lookupOrDefault<scalar>("subGridResolution", resolution_))
     {
         FatalIOErrorInFunction(coeffs_)
             << "subGridResolution must be a whole number, got "
@@ -30,15 +30,20 @@ Foam::voidFractionModels::hybrid::hybrid
     }
     if (resolution_ <= 128)
     {
-        table_.reset(new sphereOverlap::sphereLatticeTable(resolution_));
+        table_.reset
+        (
+            new sphereOverlap::sphereLatticeTable(resolution_, twoD_ ? int(emptyDir_) : -1)
+        );
     }
 }
 
 
-void Foam::voidFractionModels::hybrid::distribute(const particleData& particles)
+void Foam::voidFractionModels::hybrid::distribute
+(
+    const pointField& x,
+    const scalarField& r
+)
 {
-    const pointField& x = particles.positions();
-    const scalarField& r = particles.radii();
 
     crossed_.setSize(x.size());
     forAll(x, p)
@@ -69,8 +74,10 @@ void Foam::voidFractionModels::hybrid::distribute(const particleData& particles)
         else if (crossed_[p] != 0)
         {
             findSeeds(seed, c, R);
-            const scalar h = 2*R/resolution_;
-            const sphereOverlap::lattice L{{c.x() - R, c.y() - R, c.z() - R}, {h, h, h}};
+            // 2D: one layer through the centre
+            vector h = vector::one*2*R/resolution_;
+            if (twoD_) h[emptyDir_] = 2*R;
+            const sphereOverlap::lattice L{{c.x() - R, c.y() - R, c.z() - R}, {h.x(), h.y(), h.z()}};
             appendLatticeSplit(seed, c, R, L, table_.get());
         }
         weights_.endParticle();

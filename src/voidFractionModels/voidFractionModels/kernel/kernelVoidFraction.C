@@ -36,7 +36,8 @@ Foam::voidFractionModels::kernel::kernel
     }
     else
     {
-        bandwidthOverCellSize_ = positiveCoeff("bandwidthOverCellSize", 0.4);
+        bandwidthOverCellSize_ =
+            positiveCoeff("bandwidthOverCellSize", seedDefault(0.4, 1.0));
     }
     collectWalls(mesh, coeffs_.lookupOrDefault<bool>("reflectAtWalls", true));
 }
@@ -243,10 +244,12 @@ void Foam::voidFractionModels::kernel::walkWeights
 }
 
 
-void Foam::voidFractionModels::kernel::distribute(const particleData& particles)
+void Foam::voidFractionModels::kernel::distribute
+(
+    const pointField& x,
+    const scalarField& r
+)
 {
-    const pointField& x = particles.positions();
-    const scalarField& V = mesh_.V();
     const label n = x.size();
 
     // the rank holding the centre sets the bandwidth for all
@@ -256,7 +259,7 @@ void Foam::voidFractionModels::kernel::distribute(const particleData& particles)
     {
         const label seed = centreCells_[p];
         b_[p] = (seed < 0) ? 0
-              : (bandwidth_ > 0) ? bandwidth_ : bandwidthOverCellSize_*cbrt(V[seed]);
+              : (bandwidth_ > 0) ? bandwidth_ : bandwidthOverCellSize_*cellSize(seed);
     }
     combineOverRanks(b_, maxEqOp<scalar>());
 

@@ -43,18 +43,22 @@ Foam::voidFractionModels::voxel::voxel
     }
     else
     {
-        voxelSize_ = mesh.bounds().span()/positiveCoeff("voxelsPerSide", 50);
+        voxelSize_ = mesh.bounds().span()/positiveCoeff("voxelsPerSide", seedDefault(50, 300));
     }
+    // 2D: one layer of voxels through the slab, centres on its mid-plane
+    if (twoD_) voxelSize_[emptyDir_] = thickness_;
     Info<< "voxel: voxel size ";
     if (voxelsPerDiameter_ > 0) Info<< "diameter/" << voxelsPerDiameter_ << endl;
     else Info<< voxelSize_ << " m" << endl;
 }
 
 
-void Foam::voidFractionModels::voxel::distribute(const particleData& particles)
+void Foam::voidFractionModels::voxel::distribute
+(
+    const pointField& x,
+    const scalarField& r
+)
 {
-    const pointField& x = particles.positions();
-    const scalarField& r = particles.radii();
 
     forAll(x, p)
     {
@@ -67,9 +71,12 @@ void Foam::voidFractionModels::voxel::distribute(const particleData& particles)
         else
         {
             sphereOverlap::lattice L{{origin_.x(), origin_.y(), origin_.z()}, {0, 0, 0}};
-            const vector h = (voxelsPerDiameter_ > 0)
-                ? vector::one*2*r[p]/voxelsPerDiameter_
-                : voxelSize_;
+            vector h = voxelSize_;
+            if (voxelsPerDiameter_ > 0)
+            {
+                h = vector::one*2*r[p]/voxelsPerDiameter_;
+                if (twoD_) h[emptyDir_] = thickness_;
+            }
             L.h = {h.x(), h.y(), h.z()};
             findSeeds(seed, x[p], r[p]);
             appendLatticeSplit(seed, x[p], r[p], L);

@@ -142,6 +142,8 @@ def test_alpha_min():
         alpha = field_checks("crowded cell", case, c, r, model, alpha_min=0.4)
         _, out = run_model(case, "particles.dump", model)
         check("crowded cell %s reports moved volume" % model, (parse_report(out)["moved"] or 0) > 0)
+        # the crowded cell touches the processor boundary of the 2-way split
+        serial_vs_parallel("crowded cell", case, "particles.dump", model, 1e-12)
 
 
 def test_bad_input():

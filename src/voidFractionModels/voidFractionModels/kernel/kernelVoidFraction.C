@@ -2,6 +2,8 @@
 #include "addToRunTimeSelectionTable.H"
 #include "emptyPolyPatch.H"
 
+#include <algorithm>
+
 namespace Foam
 {
 namespace voidFractionModels
@@ -87,6 +89,21 @@ void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bo
     {
         forAll(allNormals[proci], i) add(allNormals[proci][i], allOffsets[proci][i]);
     }
+    // one order on every decomposition: mirror images across two walls
+    // that are not orthogonal depend on the order of the mirrors
+    labelList order(identity(normals.size()));
+    std::sort
+    (
+        order.begin(), order.end(),
+        [&](const label a, const label b)
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                if (mag(normals[a][d] - normals[b][d]) > 1e-9) return normals[a][d] < normals[b][d];
+            }
+            return offsets[a] < offsets[b];
+        }
+    );
 
     if (normals.size() > 64)
     {
@@ -96,7 +113,7 @@ void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bo
         return;
     }
     walls_.setSize(normals.size());
-    forAll(walls_, i) walls_[i] = wallPlane{normals[i], offsets[i]};
+    forAll(walls_, i) walls_[i] = wallPlane{normals[order[i]], offsets[order[i]]};
 }
 
 

@@ -70,14 +70,19 @@ void Foam::voidFractionModels::voxel::distribute
         }
         else
         {
-            sphereOverlap::lattice L{{origin_.x(), origin_.y(), origin_.z()}, {0, 0, 0}};
             vector h = voxelSize_;
             if (voxelsPerDiameter_ > 0)
             {
                 h = vector::one*2*r[p]/voxelsPerDiameter_;
                 if (twoD_) h[emptyDir_] = thickness_;
             }
-            L.h = {h.x(), h.y(), h.z()};
+            // shifted by irrational fractions of a voxel, so that voxel
+            // centres do not fall on the faces of a regular mesh, where the
+            // side a tied centre lands on would depend on round-off (and on
+            // the decomposition)
+            vector o = origin_ + cmptMultiply(h, vector(0.1*sqrt(2.0), 0.1*sqrt(3.0), 0.1*sqrt(5.0)));
+            if (twoD_) o[emptyDir_] = origin_[emptyDir_];
+            const sphereOverlap::lattice L{{o.x(), o.y(), o.z()}, {h.x(), h.y(), h.z()}};
             findSeeds(seed, x[p], r[p]);
             appendLatticeSplit(seed, x[p], r[p], L);
         }

@@ -71,6 +71,23 @@ def serial_vs_parallel(label, case, dump, model, tol):
          max(abs(x - y) for x, y in zip(serial, par)), 0, tol)
 
 
+def parallel_cases(prefix, seed, models, tol_of=lambda model: 1e-12):
+    """Serial against 2 ranks for the models, on a 10^3 Cartesian and a
+    tetrahedral mesh of the 3 cm cube holding 1,500 random spheres."""
+    from foamCase import box_block_mesh, new_case, random_spheres, tet_case
+    lo, hi = (0, 0, 0), (0.03, 0.03, 0.03)
+    for name in ("cartesian", "tetrahedral"):
+        case = os.path.join(WORK, prefix + name)
+        if name == "cartesian":
+            new_case(case, box_block_mesh(lo, hi, (10, 10, 10)))
+        else:
+            tet_case(case)
+        c, r = random_spheres(1500, 0.0004, 0.0012, lo, hi, seed=seed)
+        write_dump(os.path.join(case, "p.dump"), c, r)
+        for model in models:
+            serial_vs_parallel(name, case, "p.dump", model, tol_of(model))
+
+
 def run(tests, only):
     """Run the test functions (those named in only, when given); a test that
     raises counts as failed."""

@@ -10,7 +10,7 @@ import re
 import sys
 
 import checks
-from checks import WORK, check, field_checks, near, run_model, serial_vs_parallel
+from checks import WORK, check, field_checks, near, parallel_cases, run_model, serial_vs_parallel
 from foamCase import (box_block_mesh, cell_centres, cell_volumes, new_case, parse_report,
                       random_spheres, read_scalar_field, set_coupling, sh, sphere_volume,
                       tet_case, write_dump)
@@ -190,17 +190,8 @@ def test_cyclic():
 
 def test_parallel():
     print("serial against mpirun -np 2")
-    for name in ("cartesian", "tetrahedral"):
-        case = os.path.join(WORK, "est-parallel-" + name)
-        if name == "cartesian":
-            new_case(case, box_block_mesh(LO, HI, (10, 10, 10)))
-        else:
-            tet_case(case)
-        c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=15)
-        write_dump(os.path.join(case, "p.dump"), c, r)
-        for model in MODELS:
-            # the diffusion solve converges to 1e-12, not to round-off
-            serial_vs_parallel(name, case, "p.dump", model, 1e-9 if model == "diffusion" else 1e-12)
+    # the diffusion solve converges to 1e-12, not to round-off
+    parallel_cases("est-parallel-", 15, MODELS, lambda model: 1e-9 if model == "diffusion" else 1e-12)
 
 
 def test_alpha_min():

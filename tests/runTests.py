@@ -9,7 +9,7 @@ import shutil
 import sys
 
 import checks
-from checks import WORK, check, field_checks, near, run_model, serial_vs_parallel
+from checks import WORK, check, field_checks, near, parallel_cases, run_model, serial_vs_parallel
 from foamCase import (ROOT, box_block_mesh, cell_volumes, new_case, parse_report,
                       random_spheres, read_scalar_field, set_coupling, sh, sphere_volume,
                       tet_case, write_dump)
@@ -120,16 +120,7 @@ def test_cyclic():
 
 def test_parallel():
     print("serial against mpirun -np 2")
-    for name, mesh in (("cartesian", "block"), ("tetrahedral", "tet")):
-        case = os.path.join(WORK, "parallel-" + name)
-        if mesh == "block":
-            new_case(case, box_block_mesh(LO, HI, (10, 10, 10)))
-        else:
-            tet_case(case)
-        c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=7)
-        write_dump(os.path.join(case, "p.dump"), c, r)
-        for model in ("centroid", "analytical"):
-            serial_vs_parallel(name, case, "p.dump", model, 1e-12)
+    parallel_cases("parallel-", 7, ("centroid", "analytical"))
 
 
 def test_alpha_min():

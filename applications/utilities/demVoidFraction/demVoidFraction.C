@@ -20,10 +20,7 @@ Usage
 
 #include "fvCFD.H"
 #include "voidFractionModel.H"
-#include "clockTime.H"
-
-#include <algorithm>
-#include <vector>
+#include "medianCallTime.H"
 
 int main(int argc, char *argv[])
 {
@@ -72,18 +69,10 @@ int main(int argc, char *argv[])
     model->report(Info);
 
     const label repeat = args.getOrDefault<label>("repeat", 0);
-    std::vector<double> times;
-    for (label i = 0; i < repeat; ++i)
-    {
-        clock.timeIncrement();
-        model->update(particles);
-        times.push_back(returnReduce(clock.timeIncrement(), maxOp<scalar>()));
-    }
     Info<< "time per call: first " << firstCall << " s";
-    if (!times.empty())
+    if (repeat > 0)
     {
-        std::sort(times.begin(), times.end());
-        const double median = times[times.size()/2];
+        const scalar median = medianCallTime(model(), particles, repeat);
         Info<< ", median of " << repeat << " " << median << " s, "
             << particles.size()/max(median, VSMALL) << " particles/s";
     }

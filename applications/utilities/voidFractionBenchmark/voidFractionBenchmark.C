@@ -1,0 +1,195 @@
+/*---------------------------------------------------------------------------*\
+Application
+    voidFractionBenchmark
+
+Description
+    Accuracy, smoothness and cost of void fraction models on one case and
+    one particle sample. For every run of system/voidFractionBenchmarkDict:
+    the error against the reference model (the seed's Eq. 21: the mean over
+    cells of |n - n_ref|/n_ref, in %), the smoothness (its Eq. 22: the mean
+    over cells of |grad n|, in 1/m), the conservation error, and the median
+    time per call after a warm-up call. One CSV row per run, appended to the
+    file the dictionary names (a header is written when the file is new).
+
+    Each run's entries are merged over constant/couplingProperties, so
+    alphaMin and twoDimensional come from there.
+
+Usage
+    voidFractionBenchmark -dump FILE [-sample NAME] [-parallel]
+
+    system/voidFractionBenchmarkDict:
+    \verbatim
+    reference   { voidFractionModel analytical; }
+    repeat      10;
+    csv         "voidFractionBenchmark.csv";
+    runs
+    {
+        centroid    { voidFractionModel centroid; }
+        kernel0.4
+        {
+            voidFractionModel kernel;
+            kernelCoeffs { bandwidthOverCellSize 0.4; }
+            parameter   0.4;        // for the plots; optional
+        }
+    }
+    \endverbatim
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "voidFractionModel.H"
+#include "medianCallTime.H"
+#include "OFstream.H"
+#include "IFstream.H"
+
+using namespace Foam;
+
+namespace
+{
+    struct metrics
+    {
+        scalar error = 0;
+        scalar smoothness = 0;
+        scalar conservation = 0;
+        scalar time = 0;
+    };
+
+    metrics measure
+    (
+        const dictionary& dict,
+        const fvMesh& mesh,
+        const particleData& particles,
+        const scalarField& reference,
+        const label repeat,
+        scalarField* field = nullptr
+    )
+    {
+        autoPtr<voidFractionModel> model(voidFractionModel::New(dict, mesh));
+        model->update(particles);     // warm-up: first-call allocations
+        metrics m;
+        m.time = medianCallTime(model(), particles, repeat);
+
+        const volScalarField& n = model->voidFraction();
+        if (field) *field = n.primitiveField();
+        const label nCells = returnReduce(mesh.nCells(), sumOp<label>());
+        if (reference.size())
+        {
+            m.error = 100*gSum(mag(n.primitiveField() - reference)/reference)/nCells;
+        }
+        m.smoothness = gSum(mag(fvc::grad(n))().primitiveField())/nCells;
+        const voidFractionModel::statistics& s = model->stats();
+        m.conservation = mag(s.solidVolume - s.meshedVolume)/max(s.meshedVolume, VSMALL);
+        return m;
+    }
+}
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote("Error, smoothness, conservation and time of void fraction models");
+    argList::addOption("dump", "file", "LIGGGHTS text dump (id x y z radius)");
+    argList::addOption("sample", "name", "sample name for the CSV (default: the dump's)");
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    if (!args.found("dump"))
+    {
+        FatalErrorInFunction
+            << "missing -dump FILE (a LIGGGHTS text dump)" << exit(FatalError);
+    }
+    const fileName dumpFile(args.get<fileName>("dump").expand());
+    const word sample(args.getOrDefault<word>("sample", dumpFile.nameLessExt()));
+
+    const IOdictionary coupling
+    (
+        IOobject("couplingProperties", runTime.constant(), mesh, IOobject::MUST_READ)
+    );
+    const IOdictionary benchDict
+    (
+        IOobject("voidFractionBenchmarkDict", runTime.system(), mesh, IOobject::MUST_READ)
+    );
+    const label repeat = benchDict.getOrDefault<label>("repeat", 10);
+    fileName csvName(benchDict.getOrDefault<fileName>("csv", "voidFractionBenchmark.csv").expand());
+    if (!csvName.isAbsolute()) csvName = runTime.globalPath()/csvName;
+    const dictionary& runs = benchDict.subDict("runs");
+
+    const particleData particles(particleData::readLiggghtsDump(dumpFile));
+    const scalar rMax = gMax(particles.radii());
+
+    // cell size as the seed's multiple X of the largest diameter
+    dictionary referenceDict(coupling);
+    referenceDict.merge(benchDict.subDict("reference"));
+    const bool twoD = referenceDict.getOrDefault<bool>("twoDimensional", false);
+    const label nCells = returnReduce(mesh.nCells(), sumOp<label>());
+    const scalar meanV = gSum(mesh.V().field())/nCells;
+    scalar thickness = 0;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (mesh.solutionD()[d] == -1) thickness = mesh.bounds().span()[d];
+    }
+    const scalar ds = (twoD && thickness > 0) ? Foam::sqrt(meanV/thickness) : Foam::cbrt(meanV);
+    const scalar X = ds/(2*rMax);
+
+    Info<< "Sample " << sample << ": " << particles.size() << " particles, "
+        << nCells << " cells, X = " << X << nl << endl;
+
+    scalarField reference;
+    const metrics ref = measure(referenceDict, mesh, particles, scalarField(), repeat, &reference);
+    if (gMin(reference) <= 0)
+    {
+        FatalErrorInFunction
+            << "the reference field has a void fraction <= 0: Eq. 21 divides by it"
+            << exit(FatalError);
+    }
+
+    autoPtr<OFstream> csv;
+    if (Pstream::master())
+    {
+        const bool isNew = !isFile(csvName);
+        csv.reset(new OFstream(csvName, IOstream::ASCII, IOstream::currentVersion,
+                               IOstream::UNCOMPRESSED, true));
+        if (!csv().good())
+        {
+            FatalErrorInFunction
+                << "cannot write the CSV file " << csvName << exit(FatalError);
+        }
+        if (isNew)
+        {
+            csv()<< "sample,nParticles,nCells,X,nProcs,run,model,parameter,"
+                 << "error_percent,smoothness,conservation,median_s,particles_per_s" << nl;
+        }
+    }
+    auto row = [&](const word& run, const dictionary& dict, const metrics& m)
+    {
+        Info<< "    " << run << ": error " << m.error << " %, smoothness " << m.smoothness
+            << " 1/m, conservation " << m.conservation << ", median " << m.time << " s" << endl;
+        if (!csv.valid()) return;
+        csv().precision(8);
+        // only the master writes: nothing collective here
+        csv()<< sample << ',' << particles.size() << ',' << nCells << ',' << X << ','
+             << Pstream::nProcs() << ',' << run << ','
+             << dict.get<word>("voidFractionModel") << ','
+             << dict.getOrDefault<scalar>("parameter", 0) << ',' << m.error << ','
+             << m.smoothness << ',' << m.conservation << ',' << m.time << ','
+             << particles.size()/max(m.time, VSMALL) << endl;
+    };
+    row("reference", referenceDict, ref);
+
+    for (const entry& e : runs)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(runs)
+                << "runs: entry " << e.keyword() << " is not a dictionary"
+                << exit(FatalIOError);
+        }
+        dictionary runDict(coupling);
+        runDict.merge(e.dict());
+        row(e.keyword(), runDict, measure(runDict, mesh, particles, reference, repeat));
+    }
+
+    Info<< nl << "Appended to " << csvName << nl << "End" << endl;
+    return 0;
+}

@@ -194,6 +194,19 @@ def test_parallel():
     parallel_cases("est-parallel-", 15, MODELS, lambda model: 1e-9 if model == "diffusion" else 1e-12)
 
 
+def test_parallel_periodic():
+    print("serial against mpirun -np 2 on a periodic box split across its periodic direction")
+    cyc = {a + b: "type cyclic; neighbourPatch %s%s;" % (a, "max" if b == "min" else "min")
+           for a in "xyz" for b in ("min", "max")}
+    case = new_case(os.path.join(WORK, "est-parallel-periodic"), box_block_mesh(LO, HI, (10, 10, 10), patches=cyc))
+    c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=16, periodic_axes=(0, 1, 2))
+    write_dump(os.path.join(case, "p.dump"), c, r)
+    for model in ("centroid", "analytical") + MODELS:
+        # conservation through images across processorCyclic patches, then the serial field
+        field_checks("periodic box", case, c, r, model)
+        serial_vs_parallel("periodic box", case, "p.dump", model, 1e-9 if model == "diffusion" else 1e-12)
+
+
 def test_alpha_min():
     print("alphaMin: excess volume moved, not deleted")
     case = new_case(os.path.join(WORK, "est-alphaMin"), box_block_mesh(LO, HI, (10, 10, 10)),
@@ -232,7 +245,7 @@ def test_bad_coefficients():
 
 def main():
     checks.run([test_conservation, test_convergence, test_vanishing_bandwidth, test_kernel_reference,
-                test_diffusion_is_gaussian, test_cyclic, test_alpha_min, test_parallel,
+                test_diffusion_is_gaussian, test_cyclic, test_alpha_min, test_parallel, test_parallel_periodic,
                 test_bad_coefficients], sys.argv[1:])
     return checks.summary("estimators")
 

@@ -1,6 +1,5 @@
 #include "particleCellLocator.H"
 #include "boundBox.H"
-#include "cyclicPolyPatch.H"
 #include "volFields.H"
 
 #include <algorithm>
@@ -100,7 +99,6 @@ bool Foam::particleCellLocator::detectTensorGrid()
     }
     else
     {
-        detectPeriodicEnds();
         for (direction d = 0; d < 3; ++d)
         {
             const scalarList& g = grid_[d];
@@ -117,42 +115,10 @@ bool Foam::particleCellLocator::detectTensorGrid()
 }
 
 
-void Foam::particleCellLocator::detectPeriodicEnds()
-{
-    const vectorField& Cf = mesh_.faceCentres();
-    const scalar tol = 1e-9*boundBox(mesh_.points()).mag();
-    label nCyclic[3] = {0, 0, 0}, nOther[3] = {0, 0, 0};
-    for (const polyPatch& pp : mesh_.boundaryMesh())
-    {
-        const bool cyclic = isA<cyclicPolyPatch>(pp);
-        forAll(pp, i)
-        {
-            const point& c = Cf[pp.start() + i];
-            for (direction d = 0; d < 3; ++d)
-            {
-                if
-                (
-                    mag(c[d] - grid_[d].first()) < tol
-                 || mag(c[d] - grid_[d].last()) < tol
-                )
-                {
-                    (cyclic ? nCyclic[d] : nOther[d])++;
-                }
-            }
-        }
-    }
-    for (direction d = 0; d < 3; ++d)
-    {
-        periodic_[d] = (nCyclic[d] && nOther[d]) ? -1 : (nCyclic[d] ? 1 : 0);
-    }
-}
-
-
 Foam::particleCellLocator::particleCellLocator(const fvMesh& mesh)
 :
     mesh_(mesh),
-    invSpacing_{0, 0, 0},
-    periodic_{0, 0, 0}
+    invSpacing_{0, 0, 0}
 {
     // decomposed cases: a processor's part of a box mesh is a box mesh too
     if (detectTensorGrid())
@@ -262,13 +228,7 @@ bool Foam::particleCellLocator::planeCuts
             offset[d] = g[i + 1] - c[d];
             high[d] = i + 1;
         }
-        if (low[d] < 0 || high[d] == n)
-        {
-            if (periodic_[d] < 0) return false;
-            const bool wrap = (periodic_[d] == 1);
-            if (low[d] < 0) low[d] = wrap ? n - 1 : -1;
-            if (high[d] == n) high[d] = wrap ? 0 : -1;
-        }
+        if (high[d] == n) high[d] = -1;
     }
     return true;
 }

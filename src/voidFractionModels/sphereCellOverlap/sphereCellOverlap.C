@@ -1,5 +1,4 @@
 #include "sphereCellOverlap.H"
-#include "cyclicPolyPatch.H"
 #include "emptyPolyPatch.H"
 #include "treeBoundBox.H"
 #include "boundBox.H"
@@ -33,7 +32,6 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
     faceMax_(mesh.nFaces()),
     faceNormal_(mesh.nFaces()),
     planarFace_(mesh.nFaces(), true),
-    coupledFace_(mesh.nFaces() - mesh.nInternalFaces(), -1),
     queuedAt_(mesh.nCells(), 0),
     walkCount_(0),
     emptyDir_(-1),
@@ -76,18 +74,9 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
     DynamicList<label> bFaces;
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
-        if (!isA<emptyPolyPatch>(pp) && !isA<cyclicPolyPatch>(pp))
+        if (!isA<emptyPolyPatch>(pp))
         {
             forAll(pp, i) bFaces.append(pp.start() + i);
-        }
-        if (isA<cyclicPolyPatch>(pp))
-        {
-            const cyclicPolyPatch& cpp = refCast<const cyclicPolyPatch>(pp);
-            const label nbrStart = cpp.neighbPatch().start();
-            forAll(cpp, i)
-            {
-                coupledFace_[cpp.start() + i - mesh.nInternalFaces()] = nbrStart + i;
-            }
         }
     }
     boundaryFaces_.transfer(bFaces);
@@ -262,22 +251,14 @@ void Foam::sphereCellOverlap::overlaps
     DynamicList<scalar>& volumes
 ) const
 {
-    const scalar shiftTol = 1e-6*R;
     doneFaces_.clear();
     doneValues_.clear();
-    doneShift_ = Zero;
     forEachReachedCell
     (
         c, R, seeds,
-        [&](const label celli, const vector& shift)
+        [&](const label celli)
         {
-            if (magSqr(shift - doneShift_) > sqr(shiftTol))
-            {
-                doneFaces_.clear();
-                doneValues_.clear();
-                doneShift_ = shift;
-            }
-            const scalar v = cellVolume(celli, c + shift, R);
+            const scalar v = cellVolume(celli, c, R);
             if (v > 0)
             {
                 cells.append(celli);

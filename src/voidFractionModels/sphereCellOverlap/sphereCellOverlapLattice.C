@@ -42,17 +42,16 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
     forEachReachedCell
     (
         c, R, seeds,
-        [&](const label celli, const vector& shift)
+        [&](const label celli)
         {
             if (!isBox_[celli])
             {
-                general_.append(visit{celli, shift});
+                general_.append(celli);
                 return;
             }
-            const vec3 cs = toVec3(c + shift);
             const long n = table
-                ? table->count(cs, R, cellMin_[celli], cellMax_[celli])
-                : latticeCount(cs, R, lattice{L.o + toVec3(shift), L.h}, cellMin_[celli], cellMax_[celli]);
+                ? table->count(c3, R, cellMin_[celli], cellMax_[celli])
+                : latticeCount(c3, R, L, cellMin_[celli], cellMax_[celli]);
             if (n)
             {
                 cells.append(celli);
@@ -77,15 +76,14 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
                 for (label t = 0; t < nGeneral; ++t)
                 {
                     const label k = (last + t) % nGeneral;
-                    const visit& v = general_[k];
-                    const vec3 x = p + toVec3(v.shift);
-                    const vec3& lo = cellMin_[v.cell];
-                    const vec3& hi = cellMax_[v.cell];
+                    const label celli = general_[k];
+                    const vec3& lo = cellMin_[celli];
+                    const vec3& hi = cellMax_[celli];
                     if
                     (
-                        x.x >= lo.x && x.x <= hi.x && x.y >= lo.y && x.y <= hi.y
-                     && x.z >= lo.z && x.z <= hi.z
-                     && contains(v.cell, point(x.x, x.y, x.z))
+                        p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y
+                     && p.z >= lo.z && p.z <= hi.z
+                     && contains(celli, point(p.x, p.y, p.z))
                     )
                     {
                         ++generalCounts_[k];
@@ -99,7 +97,7 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
         {
             if (generalCounts_[k])
             {
-                cells.append(general_[k].cell);
+                cells.append(general_[k]);
                 counts.append(generalCounts_[k]);
             }
         }

@@ -10,64 +10,37 @@ void Foam::sphereCellOverlap::forEachReachedCell
 {
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
-    const vectorField& Cf = mesh_.faceCentres();
     const label nInternal = mesh_.nInternalFaces();
-    const scalar shiftTol = 1e-6*R;
 
     queue_.clear();
     ++walkCount_;
-    auto reached = [&](const label celli, const vector& shift)
+    auto reached = [&](const label celli)
     {
-        if (!cube) return reachesBox(celli, c + shift, R);
+        if (!cube) return reachesBox(celli, c, R);
         const sphereOverlap::vec3& lo = cellMin_[celli];
         const sphereOverlap::vec3& hi = cellMax_[celli];
-        const point x = c + shift;
-        return lo.x <= x.x() + R && hi.x >= x.x() - R
-            && lo.y <= x.y() + R && hi.y >= x.y() - R
-            && lo.z <= x.z() + R && hi.z >= x.z() - R;
+        return lo.x <= c.x() + R && hi.x >= c.x() - R
+            && lo.y <= c.y() + R && hi.y >= c.y() - R
+            && lo.z <= c.z() + R && hi.z >= c.z() - R;
     };
-    auto enqueue = [&](const label celli, const vector& shift)
+    auto enqueue = [&](const label celli)
     {
-        const bool unshifted = (magSqr(shift) < sqr(shiftTol));
-        if (unshifted)
-        {
-            if (queuedAt_[celli] == walkCount_) return;
-        }
-        else
-        {
-            for (const visit& v : queue_)
-            {
-                if (v.cell == celli && magSqr(v.shift - shift) < sqr(shiftTol)) return;
-            }
-        }
-        if (reached(celli, shift))
-        {
-            if (unshifted) queuedAt_[celli] = walkCount_;
-            queue_.append(visit{celli, shift});
-        }
+        if (queuedAt_[celli] == walkCount_ || !reached(celli)) return;
+        queuedAt_[celli] = walkCount_;
+        queue_.append(celli);
     };
-    for (const label seed : seeds) enqueue(seed, Zero);
+    for (const label seed : seeds) enqueue(seed);
 
     // queue_ grows while it is read: a breadth-first walk
     for (label q = 0; q < queue_.size(); ++q)
     {
-        const label celli = queue_[q].cell;
-        const vector shift = queue_[q].shift;
-        visitor(celli, shift);
+        const label celli = queue_[q];
+        visitor(celli);
         for (const label facei : mesh_.cells()[celli])
         {
             if (facei < nInternal)
             {
-                enqueue(own[facei] == celli ? nei[facei] : own[facei], shift);
-            }
-            else
-            {
-                const label nbrFace = coupledFace_[facei - nInternal];
-                if (nbrFace >= 0)
-                {
-                    // the image enters through nbrFace: shift by the translation
-                    enqueue(own[nbrFace], shift + Cf[nbrFace] - Cf[facei]);
-                }
+                enqueue(own[facei] == celli ? nei[facei] : own[facei]);
             }
         }
     }

@@ -25,8 +25,8 @@ Foam::voidFractionModels::analytical::analytical
 
 void Foam::voidFractionModels::analytical::distribute
 (
-    const pointField& x,
-    const scalarField& r
+    const UList<point>& x,
+    const UList<scalar>& r
 )
 {
 

@@ -22,7 +22,7 @@ Foam::voidFractionModels::centroid::centroid
 {}
 
 
-void Foam::voidFractionModels::centroid::distribute(const pointField&, const scalarField&)
+void Foam::voidFractionModels::centroid::distribute(const UList<point>&, const UList<scalar>&)
 {
     distributeToCentreCells();
 }

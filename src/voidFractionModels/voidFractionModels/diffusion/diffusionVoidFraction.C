@@ -128,8 +128,8 @@ Foam::voidFractionModels::diffusion::diffusion
 
 void Foam::voidFractionModels::diffusion::distribute
 (
-    const pointField& x,
-    const scalarField& r
+    const UList<point>& x,
+    const UList<scalar>& r
 )
 {
     if (fromAnalytical_) analytical::distribute(x, r);

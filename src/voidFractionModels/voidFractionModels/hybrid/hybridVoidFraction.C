@@ -40,8 +40,8 @@ Foam::voidFractionModels::hybrid::hybrid
 
 void Foam::voidFractionModels::hybrid::distribute
 (
-    const pointField& x,
-    const scalarField& r
+    const UList<point>& x,
+    const UList<scalar>& r
 )
 {
 
@@ -51,7 +51,7 @@ void Foam::voidFractionModels::hybrid::distribute
         const label seed = centreCells_[p];
         crossed_[p] = (seed >= 0) ? overlap_.planesCrossed(seed, x[p], r[p]) : -1;
     }
-    combineOverRanks(crossed_, maxEqOp<label>());
+    combineOverGroup(crossed_, maxEqOp<label>());
 
     forAll(x, p)
     {

@@ -42,6 +42,15 @@ Foam::voidFractionModels::kernel::kernel
             positiveCoeff("bandwidthOverCellSize", seedDefault(0.4, 1.0));
     }
     collectWalls(mesh, coeffs_.lookupOrDefault<bool>("reflectAtWalls", true));
+    scalar maxCell = 0;
+    forAll(mesh.V(), celli) maxCell = max(maxCell, cellSize(celli));
+    maxCellSize_ = returnReduce(maxCell, maxOp<scalar>());
+}
+
+
+Foam::scalar Foam::voidFractionModels::kernel::imageReach(const scalar) const
+{
+    return cutoff_*(bandwidth_ > 0 ? bandwidth_ : bandwidthOverCellSize_*maxCellSize_);
 }
 
 
@@ -159,8 +168,6 @@ void Foam::voidFractionModels::kernel::gridWeights
         factor.clear();
         const scalarList& g = locator_.gridPlanes(d);
         const label n = g.size() - 1;
-        const scalar span = g.last() - g.first();
-        const label nShift = (locator_.periodic(d) == 1) ? 1 : 0;
         for (const point& image : images_)
         {
             // the images that differ from the particle in direction d only
@@ -170,27 +177,24 @@ void Foam::voidFractionModels::kernel::gridWeights
                 if (e != d && image[e] != c[e]) sameElsewhere = false;
             }
             if (!sameElsewhere) continue;
-            for (label s = -nShift; s <= nShift; ++s)
+            const scalar xm = image[d];
+            const scalar lo = max(xm - rc, g.first());
+            if (lo > g.last()) continue;
+            for (label i = locator_.interval(d, lo); i >= 0 && i < n; ++i)
             {
-                const scalar xm = image[d] + s*span;
-                const scalar lo = max(xm - rc, g.first());
-                if (lo > g.last()) continue;
-                for (label i = locator_.interval(d, lo); i >= 0 && i < n; ++i)
+                const scalar xc = 0.5*(g[i] + g[i + 1]);
+                if (xc > xm + rc) break;
+                if (xc < xm - rc) continue;
+                const scalar f = exp(-sqr(xc - xm)/sqr(b));
+                const label k = index.find(i);
+                if (k < 0)
                 {
-                    const scalar xc = 0.5*(g[i] + g[i + 1]);
-                    if (xc > xm + rc) break;
-                    if (xc < xm - rc) continue;
-                    const scalar f = exp(-sqr(xc - xm)/sqr(b));
-                    const label k = index.find(i);
-                    if (k < 0)
-                    {
-                        index.append(i);
-                        factor.append(f);
-                    }
-                    else
-                    {
-                        factor[k] += f;
-                    }
+                    index.append(i);
+                    factor.append(f);
+                }
+                else
+                {
+                    factor[k] += f;
                 }
             }
         }
@@ -238,9 +242,9 @@ void Foam::voidFractionModels::kernel::walkWeights
     overlap_.forEachReachedCell
     (
         c, rc, seeds_,
-        [&](const label celli, const vector& shift)
+        [&](const label celli)
         {
-            const point x = C[celli] - shift;
+            const point& x = C[celli];
             scalar w = 0;
             for (const point& image : images_)
             {
@@ -252,7 +256,7 @@ void Foam::voidFractionModels::kernel::walkWeights
             }
             w *= V[celli];
             sum += w;
-            if (celli == seed && magSqr(shift) == 0) weights_.setFraction(k0, w);
+            if (celli == seed) weights_.setFraction(k0, w);
             else if (w > 0) weights_.append(celli, w);
         },
         true
@@ -263,8 +267,8 @@ void Foam::voidFractionModels::kernel::walkWeights
 
 void Foam::voidFractionModels::kernel::distribute
 (
-    const pointField& x,
-    const scalarField& r
+    const UList<point>& x,
+    const UList<scalar>& r
 )
 {
     const label n = x.size();
@@ -278,7 +282,7 @@ void Foam::voidFractionModels::kernel::distribute
         b_[p] = (seed < 0) ? 0
               : (bandwidth_ > 0) ? bandwidth_ : bandwidthOverCellSize_*cellSize(seed);
     }
-    combineOverRanks(b_, maxEqOp<scalar>());
+    combineOverGroup(b_, maxEqOp<scalar>());
 
     forAll(x, p)
     {
@@ -293,9 +297,9 @@ void Foam::voidFractionModels::kernel::distribute
         weights_.endParticle();
     }
 
-    // normalise over all ranks; a kernel that reaches no cell centre
-    // (bandwidth far below the cell size) leaves the particle in its cell
-    combineOverRanks(sums_, plusEqOp<scalar>());
+    // normalise over all ranks and images; a kernel that reaches no cell
+    // centre (bandwidth far below the cell size) leaves it in its cell
+    combineOverGroup(sums_, plusEqOp<scalar>());
     forAll(x, p)
     {
         if (sums_[p] > 0) weights_.scale(p, 1/sums_[p]);

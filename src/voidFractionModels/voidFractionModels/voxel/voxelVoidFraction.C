@@ -55,8 +55,8 @@ Foam::voidFractionModels::voxel::voxel
 
 void Foam::voidFractionModels::voxel::distribute
 (
-    const pointField& x,
-    const scalarField& r
+    const UList<point>& x,
+    const UList<scalar>& r
 )
 {
 
@@ -80,7 +80,9 @@ void Foam::voidFractionModels::voxel::distribute
             // centres do not fall on the faces of a regular mesh, where the
             // side a tied centre lands on would depend on round-off (and on
             // the decomposition)
-            vector o = origin_ + cmptMultiply(h, vector(0.1*sqrt(2.0), 0.1*sqrt(3.0), 0.1*sqrt(5.0)));
+            // a periodic image carries the particle's voxels with it
+            vector o = origin_ + imageShift(p)
+              + cmptMultiply(h, vector(0.1*sqrt(2.0), 0.1*sqrt(3.0), 0.1*sqrt(5.0)));
             if (twoD_) o[emptyDir_] = origin_[emptyDir_];
             const sphereOverlap::lattice L{{o.x(), o.y(), o.z()}, {h.x(), h.y(), h.z()}};
             findSeeds(seed, x[p], r[p]);

@@ -205,19 +205,48 @@ bool Foam::particleCellLocator::planeCuts
     label high[3]
 ) const
 {
-    const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1;
-    const label ijk = cellIjk_[centreCell];
-    const label index[3] = {ijk % nx, (ijk/nx) % ny, ijk/(nx*ny)};
+    // the centre's interval per direction; -1 or n when it lies below or
+    // above this grid (a periodic image, a particle on another processor)
+    label index[3];
+    if (centreCell >= 0)
+    {
+        const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1;
+        const label ijk = cellIjk_[centreCell];
+        index[0] = ijk % nx;
+        index[1] = (ijk/nx) % ny;
+        index[2] = ijk/(nx*ny);
+    }
+    else
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            index[d] = interval(d, c[d]);
+            if (index[d] < 0) index[d] = (c[d] < grid_[d].first()) ? -1 : grid_[d].size() - 1;
+        }
+    }
     for (direction d = 0; d < 3; ++d)
     {
         const scalarList& g = grid_[d];
         const label n = g.size() - 1;
         const label i = index[d];
+        offset[d] = 0;
+        if (i == -1 || i == n)
+        {
+            // outside: at most the end plane may cut it, and no other
+            const bool fromBelow = (i == -1);
+            const scalar gap = fromBelow ? g[0] - c[d] : c[d] - g[n];
+            const scalar next = fromBelow ? g[1] - c[d] : c[d] - g[n - 1];
+            if (next < R) return false;
+            cut[d] = (gap < R);
+            low[d] = fromBelow ? -1 : (cut[d] ? n - 1 : -1);
+            high[d] = fromBelow ? (cut[d] ? 0 : -1) : -1;
+            offset[d] = cut[d] ? (fromBelow ? g[0] - c[d] : g[n] - c[d]) : 0;
+            continue;
+        }
         const bool below = (c[d] - g[i] < R), above = (g[i + 1] - c[d] < R);
         if (below && above) return false;
         cut[d] = below || above;
         low[d] = high[d] = i;
-        offset[d] = 0;
         if (below)
         {
             offset[d] = g[i] - c[d];

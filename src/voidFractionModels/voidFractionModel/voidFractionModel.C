@@ -401,7 +401,12 @@ void Foam::voidFractionModel::update(const particleData& particles)
             << type() << " produced weights for " << weights_.nParticles()
             << " of " << entries_.size() << " particles and images" << abort(FatalError);
     }
-    if (entries_.size() > n) mergeImageRows();
+    if (entries_.size() > n)
+    {
+        // most images reach no cell of this processor: nothing to merge
+        if (weights_.begin(n) == weights_.size()) weights_.truncate(n);
+        else mergeImageRows();
+    }
     centreCells_.setSize(n);
 
     stats_ = statistics();

@@ -33,7 +33,7 @@ void Foam::voidFractionModels::analytical::distribute
     forAll(x, p)
     {
         const label seed = centreCells_[p];
-        if (seed >= 0 && locator_.isTensorGrid() && splitOnGrid(seed, x[p], r[p]))
+        if (locator_.isTensorGrid() && splitOnGrid(seed, x[p], r[p]))
         {
             // done
         }

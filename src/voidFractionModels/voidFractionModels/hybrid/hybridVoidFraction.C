@@ -64,7 +64,7 @@ void Foam::voidFractionModels::hybrid::distribute
         }
         else if (crossed_[p] == 1)
         {
-            if (!(seed >= 0 && locator_.isTensorGrid() && splitOnGrid(seed, c, R, 1)))
+            if (!(locator_.isTensorGrid() && splitOnGrid(seed, c, R, 1)))
             {
                 findSeeds(seed, c, R);
                 exactVolumes(c, R);

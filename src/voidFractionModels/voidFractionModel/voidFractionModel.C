@@ -373,35 +373,42 @@ void Foam::voidFractionModel::update(const particleData& particles)
         projected_ = particles.positions();
         projected_.replace(emptyDir_, slabMid_);
     }
-    makeImages(twoD_ ? projected_ : particles.positions(), particles.radii());
+    const UList<point>& x0 = twoD_ ? projected_ : particles.positions();
+
+    // without cyclic patches the particles are the entries (no copy)
+    const bool periodic = periodicShifts_.size();
+    nParticles_ = n;
+    if (periodic) makeImages(x0, particles.radii());
+    const UList<point>& x = periodic ? static_cast<const UList<point>&>(entries_) : x0;
+    const UList<scalar>& r =
+        periodic ? static_cast<const UList<scalar>&>(entryRadii_) : particles.radii();
 
     // hints from the previous step are valid while the particle list is;
     // images lie outside the mesh unless a particle is outside it
     if (hints_.size() != n) hints_.setSize(n, -1);
-    centreCells_.setSize(entries_.size());
-    forAll(entries_, i)
+    centreCells_.setSize(x.size());
+    forAll(x, i)
     {
         if (i < n)
         {
-            hints_[i] = locator_.findCell(entries_[i], hints_[i]);
+            hints_[i] = locator_.findCell(x[i], hints_[i]);
             centreCells_[i] = hints_[i];
         }
         else
         {
-            centreCells_[i] =
-                globalBounds_.contains(entries_[i]) ? locator_.findCell(entries_[i]) : -1;
+            centreCells_[i] = globalBounds_.contains(x[i]) ? locator_.findCell(x[i]) : -1;
         }
     }
 
     weights_.clear();
-    distribute(entries_, entryRadii_);
-    if (weights_.nParticles() != entries_.size())
+    distribute(x, r);
+    if (weights_.nParticles() != x.size())
     {
         FatalErrorInFunction
             << type() << " produced weights for " << weights_.nParticles()
-            << " of " << entries_.size() << " particles and images" << abort(FatalError);
+            << " of " << x.size() << " particles and images" << abort(FatalError);
     }
-    if (entries_.size() > n)
+    if (x.size() > n)
     {
         // most images reach no cell of this processor: nothing to merge
         if (weights_.begin(n) == weights_.size()) weights_.truncate(n);
@@ -411,11 +418,10 @@ void Foam::voidFractionModel::update(const particleData& particles)
 
     stats_ = statistics();
     stats_.nParticles = n;
-    const scalarField& r = particles.radii();
     particleVolumes_.setSize(n);
-    forAll(r, p)
+    forAll(particleVolumes_, p)
     {
-        particleVolumes_[p] = particleVolume(r[p]);
+        particleVolumes_[p] = particleVolume(particles.radii()[p]);
     }
     spread(particleVolumes_, solid_);
     collectStatistics(particles);

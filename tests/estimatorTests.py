@@ -207,16 +207,6 @@ def test_parallel_periodic():
         serial_vs_parallel("periodic box", case, "p.dump", model, 1e-9 if model == "diffusion" else 1e-12)
 
 
-def test_alpha_min():
-    print("alphaMin: excess volume moved, not deleted")
-    case = new_case(os.path.join(WORK, "est-alphaMin"), box_block_mesh(LO, HI, (10, 10, 10)),
-                    coupling="voidFractionModel centroid;\nalphaMin 0.4;\n")
-    h = L / 10
-    c, r = random_spheres(60, 0.0008, 0.0009, (4 * h,) * 3, (5 * h,) * 3, seed=8, gap=False)
-    for model in MODELS:
-        field_checks("crowded cell", case, c, r, model, alpha_min=0.4)
-
-
 def test_bad_coefficients():
     print("bad coefficients: clear errors")
     case = new_case(os.path.join(WORK, "est-bad"), box_block_mesh(LO, HI, (4, 4, 4)))
@@ -245,7 +235,7 @@ def test_bad_coefficients():
 
 def main():
     checks.run([test_conservation, test_convergence, test_vanishing_bandwidth, test_kernel_reference,
-                test_diffusion_is_gaussian, test_cyclic, test_alpha_min, test_parallel, test_parallel_periodic,
+                test_diffusion_is_gaussian, test_cyclic, test_parallel, test_parallel_periodic,
                 test_bad_coefficients], sys.argv[1:])
     return checks.summary("estimators")
 

@@ -261,3 +261,25 @@ bool Foam::particleCellLocator::planeCuts
     }
     return true;
 }
+
+
+Foam::label Foam::particleCellLocator::planesCrossed
+(
+    const label centreCell,
+    const point& c,
+    const scalar R,
+    const label skip
+) const
+{
+    const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1;
+    const label ijk = cellIjk_[centreCell];
+    const label index[3] = {ijk % nx, (ijk/nx) % ny, ijk/(nx*ny)};
+    label n = 0;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (label(d) == skip) continue;
+        const scalarList& g = grid_[d];
+        n += (c[d] - g[index[d]] < R) + (g[index[d] + 1] - c[d] < R);
+    }
+    return n;
+}

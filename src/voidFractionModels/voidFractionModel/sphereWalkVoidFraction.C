@@ -90,8 +90,40 @@ void Foam::sphereWalkVoidFraction::appendLatticeSplit
 {
     cells_.clear();
     counts_.clear();
-    const label total =
-        seeds_.size() ? overlap_.latticeCounts(c, R, L, seeds_, cells_, counts_, table) : 0;
+    label total = 0;
+    if (locator_.isTensorGrid())
+    {
+        // the cells the sphere's box covers, by index: no walk
+        total = label(table ? table->total() : sphereOverlap::latticeCount({c.x(), c.y(), c.z()}, R, L));
+        label first[3], last[3];
+        for (direction d = 0; d < 3; ++d)
+        {
+            const scalarList& g = locator_.gridPlanes(d);
+            if (c[d] + R < g.first() || c[d] - R > g.last()) return;
+            first[d] = locator_.interval(d, max(c[d] - R, g.first()));
+            last[d] = locator_.interval(d, min(c[d] + R, g.last()));
+        }
+        const scalarList& gx = locator_.gridPlanes(0);
+        const scalarList& gy = locator_.gridPlanes(1);
+        const scalarList& gz = locator_.gridPlanes(2);
+        const sphereOverlap::vec3 c3{c.x(), c.y(), c.z()};
+        for (label k = first[2]; k <= last[2]; ++k)
+        for (label j = first[1]; j <= last[1]; ++j)
+        for (label i = first[0]; i <= last[0]; ++i)
+        {
+            const sphereOverlap::vec3 lo{gx[i], gy[j], gz[k]}, hi{gx[i + 1], gy[j + 1], gz[k + 1]};
+            const long n = table ? table->count(c3, R, lo, hi) : sphereOverlap::latticeCount(c3, R, L, lo, hi);
+            if (n)
+            {
+                cells_.append(locator_.gridCell(i, j, k));
+                counts_.append(label(n));
+            }
+        }
+    }
+    else if (seeds_.size())
+    {
+        total = overlap_.latticeCounts(c, R, L, seeds_, cells_, counts_, table);
+    }
     if (total == 0)
     {
         if (centreCell >= 0) weights_.append(centreCell, 1.0);

@@ -49,7 +49,11 @@ void Foam::voidFractionModels::hybrid::distribute
     forAll(x, p)
     {
         const label seed = centreCells_[p];
-        crossed_[p] = (seed >= 0) ? overlap_.planesCrossed(seed, x[p], r[p]) : -1;
+        crossed_[p] =
+            (seed < 0) ? -1
+          : locator_.isTensorGrid()
+          ? locator_.planesCrossed(seed, x[p], r[p], twoD_ ? label(emptyDir_) : -1)
+          : overlap_.planesCrossed(seed, x[p], r[p]);
     }
     combineOverGroup(crossed_, maxEqOp<label>());
 

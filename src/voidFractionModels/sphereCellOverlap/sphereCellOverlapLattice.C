@@ -1,24 +1,64 @@
 #include "sphereCellOverlap.H"
 
-bool Foam::sphereCellOverlap::contains(const label celli, const point& p) const
+#include <limits>
+
+long Foam::sphereCellOverlap::convexCellCount
+(
+    const label celli,
+    const sphereOverlap::vec3& c,
+    const scalar R,
+    const sphereOverlap::lattice& L
+) const
 {
+    using namespace sphereOverlap;
     const vectorField& Cf = mesh_.faceCentres();
     const labelList& own = mesh_.faceOwner();
     const label nInternal = mesh_.nInternalFaces();
-    for (const label facei : mesh_.cells()[celli])
-    {
-        const scalar s = sphereOverlap::dot(toVec3(p - Cf[facei]), faceNormal_[facei]);
-        if (own[facei] == celli)
+    const cell& faces = mesh_.cells()[celli];
+    const double inf = std::numeric_limits<double>::infinity();
+
+    // each row of the sphere's lattice in the cell's box meets the cell (its
+    // face planes) in one interval of z: count its points in closed form. A
+    // point on an internal face is the neighbour's, on a boundary face the
+    // cell's, so the cells partition space
+    long n = 0;
+    forEachLatticeRow
+    (
+        c, R, L, cellMin_[celli], cellMax_[celli] + vec3{L.h.x, L.h.y, L.h.z},
+        [&](const long i, const long j, const long k0, const long k1)
         {
-            // on an internal face: the neighbour's; on a boundary face: ours
-            if (s > 0 || (s == 0 && facei < nInternal)) return false;
+            const double x = L.o.x + (i + 0.5)*L.h.x, y = L.o.y + (j + 0.5)*L.h.y;
+            double zLo = -inf, zHi = inf;
+            bool loStrict = false, hiStrict = false;
+            for (const label facei : faces)
+            {
+                const bool owner = (own[facei] == celli);
+                const vec3 nn = (owner ? 1.0 : -1.0)*faceNormal_[facei];
+                const bool strict = owner && facei < nInternal;
+                const double rhs = dot(nn, toVec3(Cf[facei])) - nn.x*x - nn.y*y;
+                if (nn.z > 0)
+                {
+                    const double b = rhs/nn.z;
+                    if (b < zHi || (b == zHi && strict)) { zHi = b; hiStrict = strict; }
+                }
+                else if (nn.z < 0)
+                {
+                    const double b = rhs/nn.z;
+                    if (b > zLo || (b == zLo && strict)) { zLo = b; loStrict = strict; }
+                }
+                else if (strict ? !(rhs > 0) : !(rhs >= 0))
+                {
+                    return;
+                }
+            }
+            const double tLo = (zLo - L.o.z)/L.h.z - 0.5, tHi = (zHi - L.o.z)/L.h.z - 0.5;
+            long kMin = k0, kMax = k1;
+            if (zLo > -inf) kMin = std::max(kMin, long(loStrict ? std::floor(tLo) + 1 : std::ceil(tLo)));
+            if (zHi < inf) kMax = std::min(kMax, long(hiStrict ? std::ceil(tHi) - 1 : std::floor(tHi)));
+            if (kMax >= kMin) n += kMax - kMin + 1;
         }
-        else if (s < 0)
-        {
-            return false;
-        }
-    }
-    return true;
+    );
+    return n;
 }
 
 
@@ -36,8 +76,7 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
     using namespace sphereOverlap;
     const vec3 c3 = toVec3(c);
 
-    // box cells count in closed form; the others are collected and every
-    // lattice point of the sphere is located among them once
+    // box cells count in closed form, the others row by row
     general_.clear();
     forEachReachedCell
     (
@@ -60,46 +99,13 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
         }
     );
 
-    if (general_.size())
+    for (const label celli : general_)
     {
-        generalCounts_.setSize(general_.size());
-        generalCounts_ = 0;
-        const label nGeneral = general_.size();
-        label last = 0;
-        const vec3 margin{R + L.h.x, R + L.h.y, R + L.h.z};
-        forEachLatticePoint
-        (
-            c3, R, L, c3 - margin, c3 + margin,
-            [&](const vec3& p)
-            {
-                // consecutive points mostly share a cell: try the last one first
-                for (label t = 0; t < nGeneral; ++t)
-                {
-                    const label k = (last + t) % nGeneral;
-                    const label celli = general_[k];
-                    const vec3& lo = cellMin_[celli];
-                    const vec3& hi = cellMax_[celli];
-                    if
-                    (
-                        p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y
-                     && p.z >= lo.z && p.z <= hi.z
-                     && contains(celli, point(p.x, p.y, p.z))
-                    )
-                    {
-                        ++generalCounts_[k];
-                        last = k;
-                        return;
-                    }
-                }
-            }
-        );
-        forAll(general_, k)
+        const long n = convexCellCount(celli, c3, R, L);
+        if (n)
         {
-            if (generalCounts_[k])
-            {
-                cells.append(general_[k]);
-                counts.append(generalCounts_[k]);
-            }
+            cells.append(celli);
+            counts.append(label(n));
         }
     }
     return label(table ? table->total() : latticeCount(c3, R, L));

@@ -280,6 +280,15 @@ def main():
     rows = load()
     X3 = plots(rows)
     print(table(rows, X3))
+    # peak memory of a whole benchmark process (dump, mesh, every model in
+    # turn) against particle count: the slope is the memory per particle
+    peaks = sorted({(int(r["nParticles"]), max(float(q["peak_memory_MB"]) for q in rows if q["sample"] == r["sample"]))
+                    for r in rows if r["sample"].startswith("tile")})
+    if len(peaks) >= 2:
+        (n0, m0), (n1, m1) = peaks[0], peaks[-1]
+        log("peak memory %s MB at %s particles: %.0f bytes per particle" %
+            (" ".join("%.0f" % m for _, m in peaks), " ".join(str(n) for n, _ in peaks),
+             (m1 - m0) * 1048576 / (n1 - n0)))
     log("results in %s; plots pareto.png smoothness.png optimalParameter.png scaling.png" % WORK)
 
 

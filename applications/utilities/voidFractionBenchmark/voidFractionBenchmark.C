@@ -8,8 +8,9 @@ Description
     the error against the reference model (the seed's Eq. 21: the mean over
     cells of |n - n_ref|/n_ref, in %), the smoothness (its Eq. 22: the mean
     over cells of |grad n|, in 1/m), the conservation error, and the median
-    time per call after a warm-up call. One CSV row per run, appended to the
-    file the dictionary names (a header is written when the file is new).
+    time per call after a warm-up call, and the peak memory of the process
+    so far. One CSV row per run, appended to the file the dictionary names
+    (a header is written when the file is new).
 
     Each run's entries are merged over constant/couplingProperties, so
     alphaMin and twoDimensional come from there.
@@ -41,11 +42,29 @@ Usage
 #include "medianCallTime.H"
 #include "OFstream.H"
 #include "IFstream.H"
+#include "IStringStream.H"
 
 using namespace Foam;
 
 namespace
 {
+    //- Peak resident memory of this process so far (MB; 0 if unknown)
+    scalar peakMemoryMB()
+    {
+        IFstream is("/proc/self/status");
+        string line;
+        while (is.good() && is.getLine(line))
+        {
+            if (line.find("VmHWM:") == 0)
+            {
+                IStringStream ls(line.substr(6));
+                const scalar kB = readScalar(ls);
+                return kB/1024;
+            }
+        }
+        return 0;
+    }
+
     struct metrics
     {
         scalar error = 0;
@@ -158,11 +177,14 @@ int main(int argc, char *argv[])
         if (isNew)
         {
             csv()<< "sample,nParticles,nCells,X,nProcs,run,model,parameter,"
-                 << "error_percent,smoothness,conservation,median_s,particles_per_s" << nl;
+                 << "error_percent,smoothness,conservation,median_s,particles_per_s,"
+                 << "peak_memory_MB" << nl;
         }
     }
     auto row = [&](const word& run, const dictionary& dict, const metrics& m)
     {
+        // the largest rank's peak so far (every run adds to the same process)
+        const scalar memory = returnReduce(peakMemoryMB(), maxOp<scalar>());
         Info<< "    " << run << ": error " << m.error << " %, smoothness " << m.smoothness
             << " 1/m, conservation " << m.conservation << ", median " << m.time << " s" << endl;
         if (!csv.valid()) return;
@@ -173,7 +195,7 @@ int main(int argc, char *argv[])
              << dict.get<word>("voidFractionModel") << ','
              << dict.getOrDefault<scalar>("parameter", 0) << ',' << m.error << ','
              << m.smoothness << ',' << m.conservation << ',' << m.time << ','
-             << particles.size()/max(m.time, VSMALL) << endl;
+             << particles.size()/max(m.time, VSMALL) << ',' << memory << endl;
     };
     row("reference", referenceDict, ref);
 

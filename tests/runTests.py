@@ -138,6 +138,38 @@ def test_alpha_min():
                            1e-9 if model == "diffusion" else 1e-12)
 
 
+def test_liggghts_in_process():
+    print("LIGGGHTS as a library: demVoidFraction -liggghts equals the same state read from a dump")
+    case = new_case(os.path.join(WORK, "liggghts"), box_block_mesh(LO, (0.02, 0.02, 0.02), (5, 5, 5)),
+                    coupling='voidFractionModel analytical;\ndemScript "DEM/in.settle";\n')
+    os.makedirs(os.path.join(case, "DEM"), exist_ok=True)
+    shutil.copy(os.path.join(ROOT, "tests", "cases", "liggghts", "in.settle"), os.path.join(case, "DEM"))
+    rc, out = sh("demVoidFraction -liggghts -name vf_library", case, check=False)
+    check("in-process LIGGGHTS runs and reports 150 particles", rc == 0 and "Read 150 particles" in out,
+          out[-500:] if rc else "")
+    rc2, _ = sh("demVoidFraction -dump DEM/post/settled.dump -name vf_dump", case, check=False)
+    if rc == 0 and rc2 == 0:
+        a = read_scalar_field(os.path.join(case, "0", "vf_library"))
+        b = read_scalar_field(os.path.join(case, "0", "vf_dump"))
+        near("library field = dump field (max |d alpha|)", max(abs(x - y) for x, y in zip(a, b)), 0, 1e-14)
+    # on 2 ranks (LIGGGHTS inserts differently per process count: compare
+    # with the dump that run writes)
+    sh("rm -rf processor* 0 && decomposePar -force", case)
+    rc, out = sh("mpirun -np 2 demVoidFraction -parallel -liggghts -name vf_library", case, check=False)
+    check("in-process LIGGGHTS on 2 ranks runs and reports 150 particles",
+          rc == 0 and "Read 150 particles" in out, out[-500:] if rc else "")
+    rc2, _ = sh("mpirun -np 2 demVoidFraction -parallel -dump DEM/post/settled.dump -name vf_dump", case, check=False)
+    if rc == 0 and rc2 == 0:
+        sh("reconstructPar -withZero -fields '(vf_library vf_dump)'", case)
+        a = read_scalar_field(os.path.join(case, "0", "vf_library"))
+        b = read_scalar_field(os.path.join(case, "0", "vf_dump"))
+        near("2 ranks: library field = dump field (max |d alpha|)", max(abs(x - y) for x, y in zip(a, b)), 0, 1e-14)
+    sh("rm -rf processor*", case)
+    set_coupling(case, 'voidFractionModel analytical;\ndemScript "DEM/missing.in";\n')
+    rc, out = sh("demVoidFraction -liggghts", case, check=False)
+    check("missing demScript: error names it", rc != 0 and "missing.in" in out and "demScript" in out)
+
+
 def test_bad_input():
     print("bad input: clear errors")
     case = new_case(os.path.join(WORK, "bad"), box_block_mesh(LO, HI, (4, 4, 4)))
@@ -173,7 +205,7 @@ def test_bad_input():
 
 def main():
     checks.run([test_closed_forms, test_meshes, test_fast_against_general, test_cyclic,
-                test_alpha_min, test_parallel, test_bad_input], sys.argv[1:])
+                test_alpha_min, test_parallel, test_liggghts_in_process, test_bad_input], sys.argv[1:])
     return checks.summary("models")
 
 

@@ -11,6 +11,7 @@ Description
 
 Usage
     demVoidFraction -dump FILE [-model NAME] [-name FIELD] [-repeat N]
+    demVoidFraction -liggghts ...   (runs couplingProperties' demScript in-process)
         [-case DIR] [-parallel]
 
     -model overrides the dictionary's voidFractionModel; -repeat N calls the
@@ -21,11 +22,18 @@ Usage
 #include "fvCFD.H"
 #include "voidFractionModel.H"
 #include "medianCallTime.H"
+#include "liggghtsCoupling.H"
 
 int main(int argc, char *argv[])
 {
     argList::addNote("Void fraction field from a LIGGGHTS dump");
     argList::addOption("dump", "file", "LIGGGHTS text dump (id x y z radius)");
+    argList::addBoolOption
+    (
+        "liggghts",
+        "run couplingProperties' demScript in this process (LIGGGHTS as a library)"
+        " and take its particles instead of a dump"
+    );
     argList::addOption("model", "name", "override the voidFractionModel");
     argList::addOption("repeat", "N", "time N further calls (median)");
     argList::addOption("name", "field", "write the field under this name");
@@ -34,12 +42,11 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    if (!args.found("dump"))
+    if (!args.found("dump") && !args.found("liggghts"))
     {
         FatalErrorInFunction
-            << "missing -dump FILE (a LIGGGHTS text dump)" << exit(FatalError);
+            << "missing -dump FILE (a LIGGGHTS text dump) or -liggghts" << exit(FatalError);
     }
-    const fileName dumpFile(args.get<fileName>("dump").expand());
 
     IOdictionary couplingProperties
     (
@@ -59,8 +66,15 @@ int main(int argc, char *argv[])
     }
 
     clockTime clock;
-    const particleData particles(particleData::readLiggghtsDump(dumpFile));
-    Info<< "Read " << particles.size() << " particles from " << dumpFile
+    autoPtr<liggghtsCoupling> dem;
+    if (args.found("liggghts")) dem.reset(new liggghtsCoupling(runTime, dict));
+    const fileName dumpFile(args.getOrDefault<fileName>("dump", "").expand());
+    const particleData particles
+    (
+        dem.valid() ? dem->particles() : particleData::readLiggghtsDump(dumpFile)
+    );
+    Info<< "Read " << particles.size() << " particles from "
+        << (dem.valid() ? fileName("LIGGGHTS") : dumpFile)
         << " in " << clock.timeIncrement() << " s" << endl;
 
     autoPtr<voidFractionModel> model(voidFractionModel::New(dict, mesh));

@@ -2,10 +2,10 @@
 """Run time against error and smoothness for the six void fraction models,
 after the seed's calibration study (its sections 4 and 5).
 
-1. LIGGGHTS makes the seed's sample L1.2a: 8,262 frictionless spheres with a
-   size distribution uniform by number and d60/d10 = 1.2, in a periodic cube
-   compressed to a solid fraction of 0.62 (lengths x10 the seed's: the void
-   fraction does not depend on scale).
+1. LIGGGHTS makes the seed's samples L1.2a (8,262 frictionless spheres, size
+   distribution uniform by number, d60/d10 = 1.2) and L3a (22,600, d60/d10 =
+   3; full study only), in periodic cubes compressed to a solid fraction of
+   0.62 (lengths x10 the seed's: the void fraction does not depend on scale).
 2. For X = 2..6 (cell size X times the largest diameter) a periodic blockMesh
    cube; voidFractionBenchmark runs every model over its parameter (voxel
    sub-division, hybrid resolution, kernel b/ds, diffusion coefficient) and
@@ -191,19 +191,20 @@ def plots(rows):
     # optimal (least error) kernel b/ds and diffusion coefficient against X
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))
     for k, (model, seed_value) in enumerate((("kernel", 0.4), ("diffusion", 0.12))):
-        best = []
-        for X in Xs:
-            pts = [r for r in l12 if r["model"] == model and round(float(r["X"]), 2) == X]
-            if pts:
+        for sample in sorted({r["sample"] for r in serial if r["sample"] in ("L1.2a", "L3a")}):
+            sel = [r for r in serial if r["sample"] == sample and r["model"] == model]
+            best = []
+            for X in sorted({round(float(r["X"]), 2) for r in sel}):
+                pts = [r for r in sel if round(float(r["X"]), 2) == X]
                 b = min(pts, key=lambda r: float(r["error_percent"]))
                 best.append((X, float(b["parameter"])))
-        if best:
-            ax[k].plot(*zip(*best), "o-", label="least error, this study")
+            if best:
+                ax[k].plot(*zip(*best), "o-", label="least error, %s" % sample)
         ax[k].axhline(seed_value, color="k", ls=":", label="seed's calibration")
         ax[k].set_xlabel("X")
         ax[k].set_ylabel("b/ds" if model == "kernel" else "coefficient a")
         ax[k].set_title(model)
-        ax[k].legend()
+        ax[k].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(WORK, "optimalParameter.png"), dpi=110)
 
@@ -228,9 +229,14 @@ def plots(rows):
     return X3
 
 
-def table(rows, X3):
+def nearest_X(rows, sample, X):
+    Xs = {round(float(r["X"]), 2) for r in rows if r["sample"] == sample}
+    return min(Xs, key=lambda x: abs(x - X))
+
+
+def table(rows, X3, sample_name="L1.2a"):
     out = []
-    for sample, nprocs in (("L1.2a", "1"), ("L1.2a", "2")):
+    for sample, nprocs in ((sample_name, "1"), (sample_name, "2")):
         sel = [r for r in rows if r["sample"] == sample and round(float(r["X"]), 2) == X3
                and r["nProcs"] == nprocs]
         pcm = next((float(r["median_s"]) for r in sel if r["run"] == "centroid"), None)
@@ -254,32 +260,40 @@ def main():
     os.makedirs(WORK, exist_ok=True)
     if os.path.exists(CSV):
         os.remove(CSV)
-    dump, L = make_packing("L1.2a", 8262, 1.17e-3, 1.2, 0.0)
-    centres, radii = read_dump(dump)
-    r_max = max(radii)
-    phi = sum(4 / 3 * math.pi * r ** 3 for r in radii) / L ** 3
-    ds = sorted(2 * r for r in radii)
-    log("L1.2a: %d spheres, solid fraction %.3f, d60/d10 %.3f" %
-        (len(radii), phi, ds[int(0.6 * len(ds))] / ds[int(0.1 * len(ds))]))
-    # X = 2..6 as the seed; the sample is 17 diameters wide, so cells per side
-    # are whole numbers and X lands near the target (each mesh once)
-    done = set()
-    for X in (2, 2.5, 3, 4, 5, 6):
-        n = max(1, round(L / (X * 2 * r_max)))
-        if n in done:
-            continue
-        done.add(n)
-        log("X = %.2f (%d^3 cells): every model over its parameter" % (L / n / (2 * r_max), n))
-        run_case("L1.2a-X%g" % X, dump, L, X, r_max, sweep_runs())
+    # the seed's Table 4 samples L1.2a and (full study) L3a, frictionless
+    samples = [("L1.2a", 8262, 1.17e-3, 1.2)] + ([] if QUICK else [("L3a", 22600, 1.48e-3, 3.0)])
+    packed = {}
+    for name, count, r_mean, cu in samples:
+        dump, L = make_packing(name, count, r_mean, cu, 0.0)
+        centres, radii = read_dump(dump)
+        r_max = max(radii)
+        packed[name] = (dump, L, r_max, len(radii))
+        phi = sum(4 / 3 * math.pi * r ** 3 for r in radii) / L ** 3
+        ds = sorted(2 * r for r in radii)
+        log("%s: %d spheres, solid fraction %.3f, d60/d10 %.3f" %
+            (name, len(radii), phi, ds[int(0.6 * len(ds))] / ds[int(0.1 * len(ds))]))
+        # X = 2..6 as the seed; a sample is only so many diameters wide, so
+        # cells per side are whole numbers and X lands near the target
+        done = set()
+        for X in (2, 2.5, 3, 4, 5, 6):
+            n = max(1, round(L / (X * 2 * r_max)))
+            if n in done:
+                continue
+            done.add(n)
+            log("%s, X = %.2f (%d^3 cells): every model over its parameter" % (name, L / n / (2 * r_max), n))
+            run_case("%s-X%g" % (name, X), dump, L, X, r_max, sweep_runs())
+    dump, L, r_max, count = packed["L1.2a"]
     log("X = 3 on 2 MPI ranks")
     run_case("L1.2a-X3-np2", dump, L, 3, r_max, default_runs(), nprocs=2)
     for k in TILES:
         path = tile(dump, L, k)
-        log("scale: %d particles" % (len(radii) * k ** 3))
+        log("scale: %d particles" % (count * k ** 3))
         run_case("tile%d" % k, path, k * L, 3, r_max, default_runs(), sample="tile%d" % k)
     rows = load()
     X3 = plots(rows)
     print(table(rows, X3))
+    if "L3a" in packed:
+        print(table(rows, nearest_X(rows, "L3a", 3), "L3a"))
     # peak memory of a whole benchmark process (dump, mesh, every model in
     # turn) against particle count: the slope is the memory per particle
     peaks = sorted({(int(r["nParticles"]), max(float(q["peak_memory_MB"]) for q in rows if q["sample"] == r["sample"]))

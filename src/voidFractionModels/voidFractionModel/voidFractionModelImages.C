@@ -1,0 +1,152 @@
+#include "voidFractionModel.H"
+#include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
+#include "syncTools.H"
+
+#include <algorithm>
+
+
+void Foam::voidFractionModel::collectPeriodicShifts()
+{
+    // the face paired with each face of a cyclic or processorCyclic patch
+    // (its centre, untransformed): the translation to the other side
+    const label nInternal = mesh_.nInternalFaces();
+    const vectorField& Cf = mesh_.faceCentres();
+    List<vector> other(mesh_.nFaces() - nInternal);
+    forAll(other, i) other[i] = Cf[nInternal + i];
+    syncTools::swapBoundaryFaceList(mesh_, other);
+
+    const scalar tol = 1e-9*globalBounds_.mag();
+    DynamicList<vector> directions;
+    auto addDirection = [&](const vector& t)
+    {
+        if (mag(t) < tol) return;
+        for (const vector& d : directions)
+        {
+            if (mag(d - t) < tol || mag(d + t) < tol) return;
+        }
+        directions.append(t);
+    };
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if ((isA<cyclicPolyPatch>(pp) || isA<processorCyclicPolyPatch>(pp)) && pp.size())
+        {
+            addDirection(other[pp.start() - nInternal] - Cf[pp.start()]);
+        }
+    }
+    List<List<vector>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = directions;
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+    directions.clear();
+    for (const List<vector>& dirs : all)
+    {
+        for (const vector& t : dirs) addDirection(t);
+    }
+    // the same order on every decomposition (only round-off depends on it)
+    std::sort
+    (
+        directions.begin(), directions.end(),
+        [&](const vector& a, const vector& b)
+        {
+            const direction da = findMax(cmptMag(a)), db = findMax(cmptMag(b));
+            return da < db;
+        }
+    );
+
+    // every combination: a particle by an edge or a corner of a periodic
+    // box has images across one, two or three sides
+    DynamicList<vector> shifts;
+    const label K = directions.size();
+    label nComb = 1;
+    for (label k = 0; k < K; ++k) nComb *= 3;
+    for (label comb = 0; comb < nComb; ++comb)
+    {
+        vector S(Zero);
+        for (label k = 0, c = comb; k < K; ++k, c /= 3)
+        {
+            S += scalar((c % 3) - 1)*directions[k];
+        }
+        if (mag(S) > tol) shifts.append(S);
+    }
+    periodicShifts_.transfer(shifts);
+    if (periodicShifts_.size())
+    {
+        Info<< "voidFractionModel: periodic translations " << directions
+            << ": particles by a cyclic patch get periodic images" << endl;
+    }
+}
+
+
+void Foam::voidFractionModel::makeImages
+(
+    const UList<point>& x,
+    const scalarField& r
+)
+{
+    const label n = x.size();
+    nParticles_ = n;
+    entries_.clear();
+    entryRadii_.clear();
+    parent_.clear();
+    shift_.clear();
+    forAll(x, p)
+    {
+        entries_.append(x[p]);
+        entryRadii_.append(r[p]);
+        parent_.append(p);
+        shift_.append(Zero);
+    }
+    imageOffsets_.setSize(n + 1);
+    imageOffsets_[0] = 0;
+    const point& lo = globalBounds_.min();
+    const point& hi = globalBounds_.max();
+    auto overlaps = [&](const point& c, const scalar reach)
+    {
+        return c.x() - reach < hi.x() && c.x() + reach > lo.x()
+            && c.y() - reach < hi.y() && c.y() + reach > lo.y()
+            && c.z() - reach < hi.z() && c.z() + reach > lo.z();
+    };
+    label nImages = 0;
+    forAll(x, p)
+    {
+        const scalar reach = imageReach(r[p]);
+        const point& c = x[p];
+        // a particle clear of every side of the box has no image that
+        // reaches it (the translations span the box)
+        const bool clear =
+            c.x() - reach > lo.x() && c.x() + reach < hi.x()
+         && c.y() - reach > lo.y() && c.y() + reach < hi.y()
+         && c.z() - reach > lo.z() && c.z() + reach < hi.z();
+        if (!clear)
+        {
+            for (const vector& S : periodicShifts_)
+            {
+                if (!overlaps(c + S, reach)) continue;
+                entries_.append(c + S);
+                entryRadii_.append(r[p]);
+                parent_.append(p);
+                shift_.append(S);
+                ++nImages;
+            }
+        }
+        imageOffsets_[p + 1] = nImages;
+    }
+}
+
+
+void Foam::voidFractionModel::mergeImageRows()
+{
+    const label n = nParticles_;
+    merged_.clear();
+    for (label p = 0; p < n; ++p)
+    {
+        merged_.appendRow(weights_, p);
+        for (label k = imageOffsets_[p]; k < imageOffsets_[p + 1]; ++k)
+        {
+            merged_.appendRow(weights_, n + k);
+        }
+        merged_.endParticle();
+    }
+    weights_.swap(merged_);
+}

@@ -42,9 +42,9 @@ Foam::voidFractionModels::kernel::kernel
             positiveCoeff("bandwidthOverCellSize", seedDefault(0.4, 1.0));
     }
     collectWalls(mesh, coeffs_.lookupOrDefault<bool>("reflectAtWalls", true));
-    scalar maxCell = 0;
-    forAll(mesh.V(), celli) maxCell = max(maxCell, cellSize(celli));
-    maxCellSize_ = returnReduce(maxCell, maxOp<scalar>());
+    cellSize_.setSize(mesh.nCells());
+    forAll(cellSize_, celli) cellSize_[celli] = cellSize(celli);
+    maxCellSize_ = returnReduce(max(cellSize_), maxOp<scalar>());
 }
 
 
@@ -280,7 +280,7 @@ void Foam::voidFractionModels::kernel::distribute
     {
         const label seed = centreCells_[p];
         b_[p] = (seed < 0) ? 0
-              : (bandwidth_ > 0) ? bandwidth_ : bandwidthOverCellSize_*cellSize(seed);
+              : (bandwidth_ > 0) ? bandwidth_ : bandwidthOverCellSize_*cellSize_[seed];
     }
     combineOverGroup(b_, maxEqOp<scalar>());
 

@@ -264,6 +264,7 @@ void Foam::sphereCellOverlap::overlaps
                 cells.append(celli);
                 volumes.append(v);
             }
+            return v > 0;
         }
     );
 }

@@ -86,7 +86,7 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
             if (!isBox_[celli])
             {
                 general_.append(celli);
-                return;
+                return true;
             }
             const long n = table
                 ? table->count(c3, R, cellMin_[celli], cellMax_[celli])
@@ -96,6 +96,7 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
                 cells.append(celli);
                 counts.append(label(n));
             }
+            return true;
         }
     );
 

@@ -35,7 +35,7 @@ void Foam::sphereCellOverlap::forEachReachedCell
     for (label q = 0; q < queue_.size(); ++q)
     {
         const label celli = queue_[q];
-        visitor(celli);
+        if (!visitor(celli)) continue;
         for (const label facei : mesh_.cells()[celli])
         {
             if (facei < nInternal)

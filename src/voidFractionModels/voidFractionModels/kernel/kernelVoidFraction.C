@@ -258,6 +258,7 @@ void Foam::voidFractionModels::kernel::walkWeights
             sum += w;
             if (celli == seed) weights_.setFraction(k0, w);
             else if (w > 0) weights_.append(celli, w);
+            return true;
         },
         true
     );

@@ -182,8 +182,7 @@ Foam::label Foam::particleCellLocator::findCell
         const label j = interval(1, p.y());
         const label k = interval(2, p.z());
         if (i < 0 || j < 0 || k < 0) return -1;
-        const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1;
-        return ijkCell_[i + nx*(j + ny*k)];
+        return gridCell(i, j, k);
     }
     if (hint >= 0)
     {
@@ -210,11 +209,7 @@ bool Foam::particleCellLocator::planeCuts
     label index[3];
     if (centreCell >= 0)
     {
-        const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1;
-        const label ijk = cellIjk_[centreCell];
-        index[0] = ijk % nx;
-        index[1] = (ijk/nx) % ny;
-        index[2] = ijk/(nx*ny);
+        gridIndex(centreCell, index);
     }
     else
     {
@@ -271,9 +266,8 @@ Foam::label Foam::particleCellLocator::planesCrossed
     const label skip
 ) const
 {
-    const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1;
-    const label ijk = cellIjk_[centreCell];
-    const label index[3] = {ijk % nx, (ijk/nx) % ny, ijk/(nx*ny)};
+    label index[3];
+    gridIndex(centreCell, index);
     label n = 0;
     for (direction d = 0; d < 3; ++d)
     {

@@ -16,6 +16,14 @@ Foam::scalar Foam::voidFractionModel::limitSolidFraction()
             << "): no void fraction >= alphaMin exists" << exit(FatalError);
     }
 
+    // the usual step: nothing to move, nothing to allocate
+    label nOver = 0;
+    forAll(solid_, celli)
+    {
+        nOver += (solid_[celli] > maxSolid*V[celli]*(1 + 1e-12));
+    }
+    if (returnReduce(nOver, sumOp<label>()) == 0) return 0;
+
     // Faces across which volume moves: internal faces and processor faces
     // (so a decomposed case moves it exactly as the whole one does)
     const labelUList& own = mesh_.owner();
@@ -41,7 +49,7 @@ Foam::scalar Foam::voidFractionModel::limitSolidFraction()
     scalar moved = 0;
     for (label sweep = 0; sweep < 100000; ++sweep)
     {
-        label nOver = 0;
+        nOver = 0;
         forAll(solid_, celli)
         {
             room[celli] = max(maxSolid*V[celli] - solid_[celli], 0.0);

@@ -123,6 +123,8 @@ Foam::voidFractionModels::diffusion::diffusion
             << fv::snGradScheme<scalar>::MeshConstructorTablePtr_->sortedToc()
             << exit(FatalIOError);
     }
+    IStringStream schemeStream(laplacianScheme_);
+    scheme_ = fv::laplacianScheme<scalar, scalar>::New(mesh, schemeStream);
 }
 
 
@@ -143,23 +145,19 @@ void Foam::voidFractionModels::diffusion::smoothVolumes(scalarField& cellVolumes
     phi_.primitiveFieldRef() = cellVolumes/V;
     phi_.correctBoundaryConditions();
 
-    IStringStream is(laplacianScheme_);
-    tmp<fv::laplacianScheme<scalar, scalar>> scheme
-    (
-        fv::laplacianScheme<scalar, scalar>::New(mesh_, is)
-    );
+    fv::laplacianScheme<scalar, scalar>& scheme = scheme_.ref();
     const dimensionedScalar dTau("dTau", dimTime, 1.0/nSteps_);
     for (label step = 0; step < nSteps_; ++step)
     {
         const volScalarField phiOld("phiOld", phi_);
         fvScalarMatrix eq
         (
-            fvm::Sp(1/dTau, phi_) - scheme.ref().fvmLaplacian(D_, phi_)
+            fvm::Sp(1/dTau, phi_) - scheme.fvmLaplacian(D_, phi_)
          == phiOld/dTau
         );
         eq.solve(solverDict_);
         // the solution sets the fluxes; the update from them is conservative
-        phi_ = phiOld + dTau*scheme.ref().fvcLaplacian(D_, phi_);
+        phi_ = phiOld + dTau*scheme.fvcLaplacian(D_, phi_);
     }
     cellVolumes = phi_.primitiveField()*V;
 }

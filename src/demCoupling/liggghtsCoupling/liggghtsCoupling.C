@@ -7,6 +7,9 @@
 #include "lammps.h"
 #include "input.h"
 #include "atom.h"
+#include "update.h"
+#include "modify.h"
+#include "fix_property_atom.h"
 
 template<class F>
 void Foam::liggghtsCoupling::inDemDir(const F& f) const
@@ -79,48 +82,93 @@ void Foam::liggghtsCoupling::run(const label nSteps)
 }
 
 
+namespace
+{
+    //- The concatenation over ranks of each rank's list, the same on all
+    template<class T>
+    Foam::List<T> allRanks(Foam::List<T>&& local)
+    {
+        using namespace Foam;
+        if (!Pstream::parRun()) return std::move(local);
+        List<List<T>> perRank(Pstream::nProcs());
+        perRank[Pstream::myProcNo()] = std::move(local);
+        Pstream::gatherList(perRank);
+        Pstream::scatterList(perRank);
+        return ListListOps::combine<List<T>>(perRank, accessOp<List<T>>());
+    }
+
+    template<class T>
+    Foam::List<T> reordered(const Foam::List<T>& values, const Foam::labelList& order)
+    {
+        Foam::List<T> result(order.size());
+        forAll(order, i) result[i] = values[order[i]];
+        return result;
+    }
+}
+
+
 Foam::particleData Foam::liggghtsCoupling::particles() const
 {
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
     const label n = atom.nlocal;
-    List<pointField> positions(Pstream::nProcs());
-    List<scalarField> radii(Pstream::nProcs());
-    List<labelList> ids(Pstream::nProcs());
-    pointField& x = positions[Pstream::myProcNo()];
-    scalarField& r = radii[Pstream::myProcNo()];
-    labelList& id = ids[Pstream::myProcNo()];
-    x.setSize(n);
-    r.setSize(n);
-    id.setSize(n);
+    List<point> x(n);
+    List<vector> v(n);
+    List<scalar> r(n);
+    List<label> id(n);
     for (label i = 0; i < n; ++i)
     {
         x[i] = point(atom.x[i][0], atom.x[i][1], atom.x[i][2]);
+        v[i] = vector(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
         r[i] = atom.radius[i];
         id[i] = label(atom.tag[i]);
     }
-    if (Pstream::parRun())
-    {
-        Pstream::gatherList(positions);
-        Pstream::scatterList(positions);
-        Pstream::gatherList(radii);
-        Pstream::scatterList(radii);
-        Pstream::gatherList(ids);
-        Pstream::scatterList(ids);
-    }
     // in id order, whatever the DEM's decomposition
-    labelList all(ListListOps::combine<labelList>(ids, accessOp<labelList>()));
-    pointField allX(ListListOps::combine<pointField>(positions, accessOp<pointField>()));
-    scalarField allR(ListListOps::combine<scalarField>(radii, accessOp<scalarField>()));
+    const labelList ids(allRanks(std::move(id)));
     labelList order;
-    sortedOrder(all, order);
-    pointField sortedX(allX.size());
-    scalarField sortedR(allR.size());
-    labelList sortedIds(all.size());
-    forAll(order, i)
+    sortedOrder(ids, order);
+    particleData result
+    (
+        pointField(reordered(allRanks(std::move(x)), order)),
+        scalarField(reordered(allRanks(std::move(r)), order)),
+        reordered(ids, order)
+    );
+    result.setVelocities(vectorField(reordered(allRanks(std::move(v)), order)));
+    return result;
+}
+
+
+Foam::scalar Foam::liggghtsCoupling::timeStep() const
+{
+    return lmp_->update->dt;
+}
+
+
+void Foam::liggghtsCoupling::setForces
+(
+    const labelList& sortedIds,
+    const vectorField& forces
+)
+{
+    LAMMPS_NS::Fix* fix = lmp_->modify->find_fix_property
+    (
+        "dragforce", "property/atom", "vector", 0, 0, "pimpleDEMFoam", false
+    );
+    if (!fix)
     {
-        sortedX[i] = allX[order[i]];
-        sortedR[i] = allR[order[i]];
-        sortedIds[i] = all[order[i]];
+        FatalErrorInFunction
+            << "the DEM script " << demDir_ << " has no 'fix couple/cfd/force'"
+            << " (with 'fix couple/cfd couple_every N mpi' and 'atom_modify"
+            << " map array'): the fluid forces cannot reach the particles"
+            << exit(FatalError);
     }
-    return particleData(std::move(sortedX), std::move(sortedR), std::move(sortedIds));
+    double** f = static_cast<LAMMPS_NS::FixPropertyAtom*>(fix)->array_atom;
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    for (label i = 0; i < atom.nlocal; ++i)
+    {
+        const label k = findSortedIndex(sortedIds, label(atom.tag[i]));
+        const vector& F = k >= 0 ? forces[k] : vector::zero;
+        f[i][0] = F.x();
+        f[i][1] = F.y();
+        f[i][2] = F.z();
+    }
 }

@@ -31,6 +31,18 @@ Foam::particleData::particleData
 }
 
 
+void Foam::particleData::setVelocities(vectorField&& velocities)
+{
+    if (velocities.size() != positions_.size())
+    {
+        FatalErrorInFunction
+            << velocities.size() << " velocities for " << positions_.size()
+            << " particles" << exit(FatalError);
+    }
+    velocities_ = std::move(velocities);
+}
+
+
 Foam::scalar Foam::particleData::totalVolume() const
 {
     scalar v = 0;

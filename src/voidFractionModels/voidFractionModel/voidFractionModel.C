@@ -196,6 +196,33 @@ void Foam::voidFractionModel::spread
 }
 
 
+void Foam::voidFractionModel::gather
+(
+    const scalarField& perCell,
+    scalarField& perParticle
+)
+{
+    // the smoothing S acts on volumes as V M^-1 with M symmetric, so its
+    // transpose on an intensive field f is S(V f)/V
+    const scalarField& V = mesh_.V();
+    scalarField transposed(perCell*V);
+    smoothVolumes(transposed);
+    transposed /= V;
+
+    perParticle.setSize(weights_.nParticles());
+    forAll(perParticle, p)
+    {
+        scalar sum = 0;
+        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+        {
+            sum += weights_.fraction(k)*transposed[weights_.cell(k)];
+        }
+        perParticle[p] = sum;
+    }
+    combineOverRanks(perParticle, plusEqOp<scalar>());
+}
+
+
 void Foam::voidFractionModel::distributeToCentreCells()
 {
     for (const label celli : centreCells_)

@@ -1,0 +1,30 @@
+#include "DiFeliceDrag.H"
+#include "addToRunTimeSelectionTable.H"
+#include "mathematicalConstants.H"
+
+namespace Foam
+{
+namespace dragModels
+{
+    defineTypeNameAndDebug(DiFelice, 0);
+    addToRunTimeSelectionTable(dragModel, DiFelice, dictionary);
+}
+}
+
+
+Foam::scalar Foam::dragModels::DiFelice::beta
+(
+    const scalar d,
+    const scalar Vp,
+    const scalar alpha,
+    const scalar magUr,
+    const scalar rho,
+    const scalar mu
+) const
+{
+    const scalar Rep = max(Re(d, alpha, magUr, rho, mu), VSMALL);
+    // Cd |Ur| = (0.63 sqrt(Re) + 4.8)^2 mu/(alpha rho d): finite as Re -> 0
+    const scalar CdMagUr = sqr(0.63*sqrt(Rep) + 4.8)*mu/(alpha*rho*d);
+    const scalar chi = 3.7 - 0.65*exp(-0.5*sqr(1.5 - log10(Rep)));
+    return constant::mathematical::pi/8*d*d*rho*CdMagUr*pow(alpha, 2 - chi);
+}

@@ -1,0 +1,428 @@
+#include "particleFluidCoupling.H"
+#include "fvc.H"
+#include "OFstream.H"
+#include "zeroGradientFvPatchFields.H"
+
+namespace
+{
+    Foam::IOobject couplingDictIO(const Foam::fvMesh& mesh)
+    {
+        return Foam::IOobject
+        (
+            "couplingProperties",
+            mesh.time().constant(),
+            mesh,
+            Foam::IOobject::MUST_READ_IF_MODIFIED,
+            Foam::IOobject::NO_WRITE
+        );
+    }
+
+    Foam::scalar readDensity(const Foam::fvMesh& mesh)
+    {
+        const Foam::IOdictionary transport
+        (
+            Foam::IOobject
+            (
+                "transportProperties",
+                mesh.time().constant(),
+                mesh,
+                Foam::IOobject::MUST_READ,
+                Foam::IOobject::NO_WRITE,
+                false
+            )
+        );
+        const Foam::scalar rho =
+            Foam::dimensionedScalar("rho", Foam::dimDensity, transport).value();
+        if (!(rho > 0))
+        {
+            FatalIOErrorInFunction(transport)
+                << "rho must be positive, not " << rho << Foam::exit(Foam::FatalIOError);
+        }
+        return rho;
+    }
+}
+
+
+Foam::particleFluidCoupling::particleFluidCoupling
+(
+    const fvMesh& mesh,
+    const uniformDimensionedVectorField& g
+)
+:
+    mesh_(mesh),
+    dict_(couplingDictIO(mesh)),
+    rho_(readDensity(mesh)),
+    g_(g.value()),
+    formulation_(formulation::A),
+    pressureGradientForce_(false),
+    buoyancy_(false),
+    removeOutside_(false),
+    demStepsPerCoupling_(0),
+    fluidStepsPerCoupling_(1),
+    fluidStep_(0),
+    nCouplings_(0),
+    alpha_
+    (
+        IOobject
+        (
+            "alpha",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1.0),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    Ksl_
+    (
+        IOobject("Ksl", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar("zero", inv(dimTime), 0.0),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    dragSource_
+    (
+        IOobject("dragSource", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector("zero", dimAcceleration, Zero),
+        zeroGradientFvPatchVectorField::typeName
+    ),
+    timeDem_(0),
+    timeExchange_(0),
+    timeVoidFraction_(0),
+    timeForces_(0),
+    timeFluid_(0),
+    worstMomentumError_(0)
+{
+    const word form(dict_.getOrDefault<word>("formulation", "A"));
+    if (form == "B")
+    {
+        formulation_ = formulation::B;
+    }
+    else if (form != "A")
+    {
+        FatalIOErrorInFunction(dict_)
+            << "formulation " << form << " is not A (set I) or B (set II)"
+            << exit(FatalIOError);
+    }
+    for (const word& f : dict_.getOrDefault<wordList>("forces", wordList()))
+    {
+        if (f == "pressureGradient") pressureGradientForce_ = true;
+        else if (f == "buoyancy") buoyancy_ = true;
+        else
+        {
+            FatalIOErrorInFunction(dict_)
+                << "unknown entry " << f << " in forces; valid: "
+                << "(pressureGradient buoyancy)" << exit(FatalIOError);
+        }
+    }
+    if (pressureGradientForce_ && formulation_ == formulation::B)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "formulation B puts the pressure gradient into drag/alpha:"
+            << " remove pressureGradient from forces" << exit(FatalIOError);
+    }
+    const word outside(dict_.getOrDefault<word>("particlesOutside", "error"));
+    if (outside == "remove") removeOutside_ = true;
+    else if (outside != "error")
+    {
+        FatalIOErrorInFunction(dict_)
+            << "particlesOutside " << outside << " is not error or remove"
+            << exit(FatalIOError);
+    }
+
+    // bad names fail before the DEM starts
+    drag_ = dragModel::New(dict_);
+    voidFraction_ = voidFractionModel::New(dict_, mesh);
+    dem_.reset(new liggghtsCoupling(mesh.time(), dict_));
+    readTimeSteps();
+
+    // the initial state: the field the first interval starts from
+    mapParticles();
+    alpha_ = voidFraction_->voidFraction();
+    alpha_.oldTime();
+    Info<< "particleFluidCoupling: formulation " << form << ", "
+        << particles_.size() << " particles" << endl;
+}
+
+
+void Foam::particleFluidCoupling::readTimeSteps()
+{
+    const Time& runTime = mesh_.time();
+    const label interval = dict_.get<label>("couplingInterval");
+    if (interval < 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "couplingInterval must be a positive number of DEM steps, not "
+            << interval << exit(FatalIOError);
+    }
+    if (runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false))
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "adjustTimeStep: the fluid step must stay a fixed multiple or"
+            << " divisor of the coupling time" << exit(FatalIOError);
+    }
+    const scalar couplingTime = interval*dem_->timeStep();
+    const scalar dtFluid = runTime.deltaTValue();
+    const scalar perCoupling = couplingTime/dtFluid;
+    const scalar perFluid = dtFluid/couplingTime;
+    const scalar tol = 1e-6;
+    if (perCoupling >= 1 - tol && mag(perCoupling - round(perCoupling)) < tol*perCoupling)
+    {
+        fluidStepsPerCoupling_ = label(round(perCoupling));
+        demStepsPerCoupling_ = interval;
+    }
+    else if (perFluid >= 1 && mag(perFluid - round(perFluid)) < tol*perFluid)
+    {
+        fluidStepsPerCoupling_ = 1;
+        demStepsPerCoupling_ = interval*label(round(perFluid));
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict_)
+            << "the coupling time " << couplingTime << " s (couplingInterval "
+            << interval << " x DEM step " << dem_->timeStep() << " s) is not a"
+            << " whole multiple or divisor of the fluid step " << dtFluid
+            << " s (controlDict deltaT)" << exit(FatalIOError);
+    }
+    Info<< "particleFluidCoupling: " << demStepsPerCoupling_ << " DEM steps and "
+        << fluidStepsPerCoupling_ << " fluid steps per coupling" << endl;
+}
+
+
+void Foam::particleFluidCoupling::mapParticles()
+{
+    clock_.timeIncrement();
+    particles_ = dem_->particles();
+    timeExchange_ += clock_.timeIncrement();
+    voidFraction_->update(particles_);
+    timeVoidFraction_ += clock_.timeIncrement();
+    handleOutside();
+}
+
+
+void Foam::particleFluidCoupling::handleOutside()
+{
+    const label nOutside = voidFraction_->stats().nOutside;
+    if (nOutside == 0) return;
+
+    // a particle is outside when no rank holds its centre
+    labelList held(particles_.size(), 0);
+    forAll(held, i)
+    {
+        if (voidFraction_->centreCells()[i] >= 0) held[i] = 1;
+    }
+    Pstream::listCombineGather(held, maxEqOp<label>());
+    Pstream::listCombineScatter(held);
+    string ids;
+    forAll(held, i)
+    {
+        if (!held[i]) ids += " " + Foam::name(particles_.ids()[i]);
+    }
+    if (!removeOutside_)
+    {
+        FatalErrorInFunction
+            << nOutside << " particles have left the mesh at time "
+            << mesh_.time().timeName() << " (ids" << ids.substr(0, 200)
+            << "); set particlesOutside remove in couplingProperties to"
+            << " delete them from the DEM instead" << exit(FatalError);
+    }
+    Info<< "particleFluidCoupling: removing " << nOutside
+        << " particles that left the mesh from the DEM" << endl;
+    dem_->command("group vfmOutside id" + ids);
+    dem_->command("delete_atoms group vfmOutside");
+    dem_->command("group vfmOutside delete");
+}
+
+
+Foam::vectorField Foam::particleFluidCoupling::gatherVector
+(
+    const volVectorField& field
+)
+{
+    vectorField result(particles_.size(), Zero);
+    scalarField component;
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        voidFraction_->gather(field.primitiveField().component(d), component);
+        result.replace(d, component);
+    }
+    return result;
+}
+
+
+void Foam::particleFluidCoupling::beginStep
+(
+    const volVectorField& U,
+    const scalar nu
+)
+{
+    if (fluidStep_ == 0)
+    {
+        alphaStart_ = alpha_.primitiveField();
+        clock_.timeIncrement();
+        dem_->run(demStepsPerCoupling_);
+        timeDem_ += clock_.timeIncrement();
+        mapParticles();
+
+        // drag coefficients from the fluid state at each particle
+        const label n = particles_.size();
+        volumes_.setSize(n);
+        forAll(volumes_, i)
+        {
+            volumes_[i] = voidFraction_->particleVolume(particles_.radii()[i]);
+        }
+        scalarField alphaP;
+        voidFraction_->gather(voidFraction_->voidFraction().primitiveField(), alphaP);
+        voidFraction_->gather(scalarField(mesh_.nCells(), 1.0), weightSum_);
+        const vectorField Up(gatherVector(U));
+        const vectorField& v = particles_.velocities();
+        const scalar mu = rho_*nu;
+        beta_.setSize(n);
+        forAll(beta_, i)
+        {
+            const scalar s = weightSum_[i];
+            if (s <= SMALL)
+            {
+                beta_[i] = 0;
+                continue;
+            }
+            const scalar a = alphaP[i]/s;
+            const scalar d = 2*particles_.radii()[i];
+            beta_[i] = drag_->beta(d, volumes_[i], a, mag(Up[i]/s - v[i]), rho_, mu);
+            if (formulation_ == formulation::B) beta_[i] /= a;
+        }
+
+        scalarField cellBeta;
+        voidFraction_->spread(beta_, cellBeta);
+        const scalarField& V = mesh_.V();
+        Ksl_.primitiveFieldRef() = cellBeta/(rho_*V);
+        Ksl_.correctBoundaryConditions();
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            voidFraction_->spread(beta_*v.component(d), cellBeta);
+            dragSource_.primitiveFieldRef().replace(d, cellBeta/(rho_*V));
+        }
+        dragSource_.correctBoundaryConditions();
+        forceSum_ = vectorField(n, Zero);
+        timeForces_ += clock_.timeIncrement();
+    }
+
+    ++fluidStep_;
+    const scalar f = scalar(fluidStep_)/fluidStepsPerCoupling_;
+    alpha_.primitiveFieldRef() =
+        (1 - f)*alphaStart_ + f*voidFraction_->voidFraction().primitiveField();
+    alpha_.correctBoundaryConditions();
+    clock_.timeIncrement();
+}
+
+
+void Foam::particleFluidCoupling::endStep
+(
+    const volVectorField& U,
+    const volScalarField& p
+)
+{
+    timeFluid_ += clock_.timeIncrement();
+
+    const vectorField Up(gatherVector(U));
+    const vectorField& v = particles_.velocities();
+    vectorField drag(beta_*(Up - weightSum_*v));
+
+    // what the fluid lost to the particles in this step's equations
+    const vector fluidLoss = rho_*gSum
+    (
+        mesh_.V().field()*(Ksl_.primitiveField()*U.primitiveField()
+      - dragSource_.primitiveField())
+    );
+    const vector particleGain = sum(drag);
+    const scalar error =
+        mag(fluidLoss - particleGain)/max(mag(particleGain), VSMALL);
+    worstMomentumError_ = max(worstMomentumError_, error);
+
+    vectorField& F = forceSum_;
+    F += drag;
+    if (pressureGradientForce_)
+    {
+        const vectorField gradP(gatherVector(fvc::grad(p)()));
+        forAll(F, i)
+        {
+            if (weightSum_[i] > SMALL)
+            {
+                F[i] -= rho_*volumes_[i]*gradP[i]/weightSum_[i];
+            }
+        }
+    }
+    if (buoyancy_)
+    {
+        F -= rho_*volumes_*g_;
+    }
+    timeForces_ += clock_.timeIncrement();
+
+    if (fluidStep_ == fluidStepsPerCoupling_)
+    {
+        pushForces();
+    }
+}
+
+
+void Foam::particleFluidCoupling::pushForces()
+{
+    clock_.timeIncrement();
+    dem_->setForces(particles_.ids(), forceSum_/scalar(fluidStepsPerCoupling_));
+    timeExchange_ += clock_.timeIncrement();
+
+    const voidFractionModel::statistics& s = voidFraction_->stats();
+    Info<< "coupling " << nCouplings_ << ": " << particles_.size()
+        << " particles, seconds DEM " << timeDem_
+        << " exchange " << timeExchange_
+        << " voidFraction " << timeVoidFraction_
+        << " forces " << timeForces_
+        << " fluid " << timeFluid_
+        << "; alpha " << s.minVoidFraction << ".." << s.maxVoidFraction
+        << ", momentum balance " << worstMomentumError_ << endl;
+
+    ++nCouplings_;
+    fluidStep_ = 0;
+    timeDem_ = timeExchange_ = timeVoidFraction_ = timeForces_ = timeFluid_ = 0;
+    worstMomentumError_ = 0;
+}
+
+
+void Foam::particleFluidCoupling::write()
+{
+    const Time& runTime = mesh_.time();
+    dem_->command
+    (
+        "write_restart " + (runTime.globalPath()/runTime.timeName()/"DEM.restart")
+    );
+    if (!Pstream::master()) return;
+
+    const fileName dir(runTime.globalPath()/"VTK");
+    mkDir(dir);
+    OFstream os(dir/("particles_" + Foam::name(runTime.timeIndex()) + ".vtk"));
+    const pointField& x = particles_.positions();
+    const label n = x.size();
+    os  << "# vtk DataFile Version 2.0" << nl
+        << "particles at time " << runTime.timeName() << nl
+        << "ASCII" << nl << "DATASET POLYDATA" << nl
+        << "POINTS " << n << " double" << nl;
+    for (const point& pt : x)
+    {
+        os  << pt.x() << ' ' << pt.y() << ' ' << pt.z() << nl;
+    }
+    os  << "VERTICES " << n << ' ' << 2*n << nl;
+    for (label i = 0; i < n; ++i) os << "1 " << i << nl;
+    os  << "POINT_DATA " << n << nl
+        << "SCALARS radius double 1" << nl << "LOOKUP_TABLE default" << nl;
+    for (const scalar r : particles_.radii()) os << r << nl;
+    os  << "SCALARS id int 1" << nl << "LOOKUP_TABLE default" << nl;
+    for (const label id : particles_.ids()) os << id << nl;
+    os  << "VECTORS velocity double" << nl;
+    for (const vector& u : particles_.velocities())
+    {
+        os  << u.x() << ' ' << u.y() << ' ' << u.z() << nl;
+    }
+}

@@ -8,6 +8,7 @@
 #include "input.h"
 #include "atom.h"
 #include "update.h"
+#include "domain.h"
 #include "modify.h"
 #include "fix_property_atom.h"
 
@@ -117,7 +118,11 @@ Foam::particleData Foam::liggghtsCoupling::particles() const
     List<label> id(n);
     for (label i = 0; i < n; ++i)
     {
-        x[i] = point(atom.x[i][0], atom.x[i][1], atom.x[i][2]);
+        // between re-neighbourings LIGGGHTS lets atoms drift past a
+        // periodic side; the mesh sees them wrapped into the box
+        double xi[3] = {atom.x[i][0], atom.x[i][1], atom.x[i][2]};
+        lmp_->domain->remap(xi);
+        x[i] = point(xi[0], xi[1], xi[2]);
         v[i] = vector(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
         r[i] = atom.radius[i];
         id[i] = label(atom.tag[i]);

@@ -77,7 +77,14 @@ Foam::particleFluidCoupling::particleFluidCoupling
     ),
     Ksl_
     (
-        IOobject("Ksl", mesh.time().timeName(), mesh),
+        IOobject
+        (
+            "Ksl",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
         mesh,
         dimensionedScalar("zero", inv(dimTime), 0.0),
         zeroGradientFvPatchScalarField::typeName
@@ -371,7 +378,8 @@ void Foam::particleFluidCoupling::endStep
 void Foam::particleFluidCoupling::pushForces()
 {
     clock_.timeIncrement();
-    dem_->setForces(particles_.ids(), forceSum_/scalar(fluidStepsPerCoupling_));
+    const vectorField F(forceSum_/scalar(fluidStepsPerCoupling_));
+    dem_->setForces(particles_.ids(), F);
     timeExchange_ += clock_.timeIncrement();
 
     const voidFractionModel::statistics& s = voidFraction_->stats();
@@ -382,7 +390,8 @@ void Foam::particleFluidCoupling::pushForces()
         << " forces " << timeForces_
         << " fluid " << timeFluid_
         << "; alpha " << s.minVoidFraction << ".." << s.maxVoidFraction
-        << ", momentum balance " << worstMomentumError_ << endl;
+        << ", momentum balance " << worstMomentumError_
+        << "; total fluid force on the particles " << sum(F) << endl;
 
     ++nCouplings_;
     fluidStep_ = 0;

@@ -3,6 +3,10 @@
 #include "Pstream.H"
 #include "ListListOps.H"
 
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
 #include <mpi.h>
 #include "lammps.h"
 #include "input.h"
@@ -12,12 +16,49 @@
 #include "modify.h"
 #include "fix_property_atom.h"
 
-template<class F>
-void Foam::liggghtsCoupling::inDemDir(const F& f) const
+namespace
 {
+    //- The screen file and the work of the LIGGGHTS call under way, for the
+    //  exit handler: LIGGGHTS ends the process with exit() on an input
+    //  error, and says why only on its screen
+    std::string activeScreen;
+    std::string activeWork;
+
+    void reportLiggghtsExit()
+    {
+        if (activeScreen.empty()) return;
+        std::fflush(nullptr);
+        std::cerr << "\n--> LIGGGHTS stopped the run while " << activeWork
+            << "; its message (from " << activeScreen << "):\n";
+        std::ifstream screen(activeScreen);
+        std::string line, last;
+        bool found = false;
+        while (std::getline(screen, line))
+        {
+            if (line.find("ERROR") != std::string::npos)
+            {
+                std::cerr << "    " << line << "\n";
+                found = true;
+            }
+            last = line;
+        }
+        if (!found) std::cerr << "    " << last << "\n";
+        std::cerr << std::flush;
+    }
+}
+
+
+template<class F>
+void Foam::liggghtsCoupling::inDemDir(const F& f, const std::string& work) const
+{
+    static const bool registered = (std::atexit(reportLiggghtsExit) == 0);
+    (void)registered;
     const fileName here(cwd());
     chDir(demDir_);
+    activeScreen = demDir_/screen_;
+    activeWork = work;
     f();
+    activeScreen.clear();
     chDir(here);
 }
 
@@ -27,15 +68,30 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
     lmp_(nullptr),
     ownMpi_(false)
 {
-    const fileName script(dict.get<fileName>("demScript").expand());
+    // a run starting from a time the solver wrote continues the DEM from
+    // the restart file written with it
+    const fileName restart(runTime.globalPath()/runTime.timeName()/"DEM.restart");
+    const bool restarting = isFile(restart);
+    const word scriptKey(restarting ? "demRestartScript" : "demScript");
+    if (restarting && !dict.found(scriptKey))
+    {
+        FatalIOErrorInFunction(dict)
+            << "the run starts from time " << runTime.timeName()
+            << " with the DEM restart file " << restart << ": set "
+            << scriptKey << " to a LIGGGHTS script that reads it with"
+            << " 'read_restart ${demRestart}'" << exit(FatalIOError);
+    }
+    const fileName script(dict.get<fileName>(scriptKey).expand());
     const fileName path(script.isAbsolute() ? script : runTime.globalPath()/script);
     if (!isFile(path))
     {
         FatalIOErrorInFunction(dict)
-            << "demScript: no LIGGGHTS input script " << path << exit(FatalIOError);
+            << scriptKey << ": no LIGGGHTS input script " << path
+            << exit(FatalIOError);
     }
     demDir_ = path.path();
-    const fileName screen(dict.getOrDefault<fileName>("demScreen", "log.liggghtsScreen"));
+    screen_ = dict.getOrDefault<fileName>("demScreen", "log.liggghtsScreen");
+    const fileName& screen = screen_;
 
     int started = 0;
     MPI_Initialized(&started);
@@ -45,8 +101,13 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
         ownMpi_ = true;
     }
 
-    std::string arg0("liggghts"), arg1("-screen"), arg2(screen), arg3("-log"), arg4("none");
-    char* argv[] = {&arg0[0], &arg1[0], &arg2[0], &arg3[0], &arg4[0]};
+    std::string args[] =
+    {
+        "liggghts", "-screen", screen, "-log", "none",
+        "-var", "demRestart", restarting ? restart : fileName("none")
+    };
+    char* argv[] = {&args[0][0], &args[1][0], &args[2][0], &args[3][0],
+        &args[4][0], &args[5][0], &args[6][0], &args[7][0]};
     inDemDir
     (
         [&]()
@@ -54,9 +115,10 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
             // its own communicator: its messages never meet OpenFOAM's
             MPI_Comm comm;
             MPI_Comm_dup(MPI_COMM_WORLD, &comm);
-            lmp_ = new LAMMPS_NS::LAMMPS(5, argv, comm);
+            lmp_ = new LAMMPS_NS::LAMMPS(8, argv, comm);
             lmp_->input->file(path.name().c_str());
-        }
+        },
+        "running " + path
     );
     Info<< "liggghtsCoupling: ran " << path << ": " << particles().size()
         << " particles (LIGGGHTS screen output in " << demDir_/screen << ")" << endl;
@@ -73,7 +135,7 @@ Foam::liggghtsCoupling::~liggghtsCoupling()
 void Foam::liggghtsCoupling::command(const string& line)
 {
     std::string copy(line);
-    inDemDir([&]() { lmp_->input->one(copy.c_str()); });
+    inDemDir([&]() { lmp_->input->one(copy.c_str()); }, "executing '" + copy + "'");
 }
 
 

@@ -403,15 +403,15 @@ void Foam::particleFluidCoupling::pushForces()
 void Foam::particleFluidCoupling::write()
 {
     const Time& runTime = mesh_.time();
-    dem_->command
-    (
-        "write_restart " + (runTime.globalPath()/runTime.timeName()/"DEM.restart")
-    );
+    const fileName dir(runTime.globalPath()/runTime.timeName());
+    // in parallel the time directories are the processors'; LIGGGHTS writes
+    // one file from the master
+    if (Pstream::master()) mkDir(dir);
+    dem_->command("write_restart " + (dir/"DEM.restart"));
     if (!Pstream::master()) return;
 
-    const fileName dir(runTime.globalPath()/"VTK");
-    mkDir(dir);
-    OFstream os(dir/("particles_" + Foam::name(runTime.timeIndex()) + ".vtk"));
+    mkDir(runTime.globalPath()/"VTK");
+    OFstream os(runTime.globalPath()/"VTK"/("particles_" + Foam::name(runTime.timeIndex()) + ".vtk"));
     const pointField& x = particles_.positions();
     const label n = x.size();
     os  << "# vtk DataFile Version 2.0" << nl

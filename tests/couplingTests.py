@@ -1,0 +1,277 @@
+#!/usr/bin/python3
+"""pimpleDEMFoam with LIGGGHTS: the tutorials against their independent
+references (Schiller-Naumann, Di Felice and Beetstra single-sphere drag,
+Ergun, bed weight, Wen-Yu), exact momentum exchange, restart, serial
+against 2 ranks, and bad input stopping with a clear error and no hang."""
+import math
+import os
+import re
+import shutil
+import sys
+
+import numpy as np
+from scipy.optimize import brentq
+
+import checks
+from checks import WORK, check, near
+from foamCase import ROOT, sh
+
+TUTORIALS = os.path.join(ROOT, "tutorials")
+
+
+def copy_tutorial(name, dest):
+    path = os.path.join(WORK, dest)
+    shutil.rmtree(path, ignore_errors=True)
+    shutil.copytree(os.path.join(TUTORIALS, name), path)
+    sh("./Allclean", path)
+    return path
+
+
+def edit(path, pattern, replacement):
+    with open(path) as f:
+        text = f.read()
+    new = re.sub(pattern, replacement, text, flags=re.M)
+    if new == text:
+        raise RuntimeError("%s: no match for %r" % (path, pattern))
+    with open(path, "w") as f:
+        f.write(new)
+
+
+def results(path):
+    return {k: float(v) for k, v in (l.split() for l in open(path))}
+
+
+def coupling_lines(log):
+    """(min alpha, max alpha, momentum balance) of every coupling line"""
+    pattern = re.compile(r"^coupling \d+: .*alpha (\S+)\.\.(\S+), momentum balance (\S+);")
+    rows = []
+    for line in open(log):
+        m = pattern.match(line)
+        if m:
+            rows.append(tuple(float(m.group(i).rstrip(",")) for i in (1, 2, 3)))
+    return rows
+
+
+def check_coupling_log(label, log, alpha_min):
+    rows = coupling_lines(log)
+    check("%s: coupling steps logged" % label, len(rows) > 10, "(%d)" % len(rows))
+    if not rows:
+        return
+    lo = min(r[0] for r in rows)
+    hi = max(r[1] for r in rows)
+    balance = max(r[2] for r in rows)
+    check("%s: void fraction within [alphaMin, 1], never NaN" % label,
+          all(math.isfinite(v) for r in rows for v in r) and lo >= alpha_min and hi <= 1,
+          "(min %.4f, max %.6f)" % (lo, hi))
+    check("%s: momentum the particles gain = momentum the fluid loses" % label, balance < 1e-12,
+          "(worst relative difference %.2e)" % balance)
+
+
+def history(case, name="history.txt"):
+    return np.loadtxt(os.path.join(case, "DEM", "post", name))
+
+
+# single-sphere drag laws, written here from the papers (independent of the C++)
+rho_f, nu, rho_p, d, g = 1000.0, 1e-6, 2500.0, 1e-3, 9.81
+mu = rho_f*nu
+
+
+def cd_schiller_naumann(re):
+    return 24/re*(1 + 0.15*re**0.687) if re < 1000 else 0.44
+
+
+def cd_di_felice(re):
+    return (0.63 + 4.8/math.sqrt(re))**2
+
+
+def cd_beetstra_single(re):
+    # Beetstra et al. (2007) at solid fraction 0: F = 1 + 0.413 Re/24 (1 + 8.4 Re^-0.343)/(1 + Re^-1/2),
+    # drag 3 pi mu d U F, so Cd = 24 F/Re
+    f = 1 + 0.413*re/24*(1 + 8.4*re**-0.343)/(1 + re**-0.5)
+    return 24*f/re
+
+
+def terminal_velocity(cd):
+    def excess(v):
+        re = rho_f*v*d/mu
+        return (rho_p - rho_f)*g*math.pi*d**3/6 - 0.5*cd(re)*rho_f*math.pi*d*d/4*v*v
+    return brentq(excess, 1e-5, 5.0)
+
+
+def test_settling_sphere():
+    print("settlingSphere tutorial (Gidaspow drag, formulation A)")
+    case = copy_tutorial("settlingSphere", "settling")
+    rc, out = sh("./Allrun", case, check=False)
+    check("Allrun completed", rc == 0, out[-1500:] if rc else "")
+    r = results(os.path.join(case, "settling.result"))
+    check("terminal velocity within 2 % of Schiller-Naumann", r["terminal_error"] < 0.02,
+          "(%.3f %%)" % (100*r["terminal_error"]))
+    check("velocity history within 2 % of the Schiller-Naumann ODE", r["history_error"] < 0.02,
+          "(%.3f %% of terminal)" % (100*r["history_error"]))
+    check_coupling_log("settlingSphere", os.path.join(case, "log.pimpleDEMFoam"), 0.99)
+    check("particles written for ParaView (legacy VTK)",
+          os.path.isfile(os.path.join(case, "VTK", "particles_800.vtk")))
+
+
+def settle_with(dest, coupling_edits, reference, label):
+    case = copy_tutorial("settlingSphere", dest)
+    props = os.path.join(case, "constant", "couplingProperties")
+    for pattern, replacement in coupling_edits:
+        edit(props, pattern, replacement)
+    edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+0.4;", "endTime 0.25;")
+    sh("cp -r 0.orig 0 && blockMesh", case)
+    rc, out = sh("pimpleDEMFoam > log.pimpleDEMFoam 2>&1", case, check=False)
+    check("%s: run completed" % label, rc == 0)
+    v = -history(case)[-1, 2]
+    near("%s: terminal velocity / single-sphere law" % label, v/reference, 1.0, 0.02)
+    return case
+
+
+def test_drag_laws():
+    print("drag laws and formulation B on the settling sphere, against single-sphere laws")
+    settle_with("settle-difelice", [(r"^dragModel\s+\w+;", "dragModel DiFelice;")],
+                terminal_velocity(cd_di_felice), "DiFelice")
+    settle_with("settle-beetstra", [(r"^dragModel\s+\w+;", "dragModel Beetstra;")],
+                terminal_velocity(cd_beetstra_single), "Beetstra")
+    case = settle_with("settle-modelB", [(r"^formulation\s+A;", "formulation B;"),
+                                        (r"^forces\s+\(.*\);", "forces (buoyancy);")],
+                       terminal_velocity(cd_schiller_naumann), "Gidaspow, formulation B")
+    check_coupling_log("formulation B", os.path.join(case, "log.pimpleDEMFoam"), 0.99)
+
+
+def test_restart():
+    print("restart from a written time continues the same particle")
+    case = copy_tutorial("settlingSphere", "settle-restart")
+    edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+0.4;", "endTime 0.2;")
+    edit(os.path.join(case, "system", "controlDict"), r"^writeInterval\s+200;", "writeInterval 100;")
+    sh("cp -r 0.orig 0 && blockMesh && pimpleDEMFoam > log.full 2>&1", case)
+    full = history(case)
+    check("DEM restart file written with the time", os.path.isfile(os.path.join(case, "0.1", "DEM.restart")))
+    for t in ("0.15", "0.2"):
+        shutil.rmtree(os.path.join(case, t))
+    rc, out = sh("pimpleDEMFoam > log.restart 2>&1", case, check=False)
+    check("restarted run completed", rc == 0, out[-800:] if rc else "")
+    log = open(os.path.join(case, "log.restart")).read()
+    check("restart ran demRestartScript", "in.restart" in log and "Starting time loop" in log)
+    rest = history(case, "history.restart.txt")
+    check("restart continues from t = 0.1 with one particle", abs(rest[0, 0] - 0.1) < 1e-3 and
+          "1 particles" in log, "(first time %g)" % rest[0, 0])
+    z_full = full[np.argmin(abs(full[:, 0] - 0.2)), 1]
+    near("position at t = 0.2, restarted / uninterrupted", rest[-1, 1]/z_full, 1.0, 1e-6)
+
+
+def test_serial_parallel():
+    print("serial against mpirun -np 2 (the mesh split across the sphere's path)")
+    case = copy_tutorial("settlingSphere", "settle-parallel")
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
+    # linear solvers converged to round-off, so that only the decomposition differs
+    edit(os.path.join(case, "system", "fvSolution"), r"tolerance 1e-10; relTol [0-9.]+;", "tolerance 1e-13; relTol 0;")
+    sh("cp -r 0.orig 0 && blockMesh && pimpleDEMFoam > log.serial 2>&1", case)
+    serial = history(case)
+    shutil.rmtree(os.path.join(case, "DEM", "post"))
+    sh("rm -rf 0.[1-9]*", case)
+    rc, out = sh("decomposePar -force > log.decomposePar && "
+                 "timeout 300 mpirun -np 2 pimpleDEMFoam -parallel > log.parallel 2>&1", case, check=False)
+    check("parallel run completed", rc == 0, out[-800:] if rc else "")
+    par = history(case)
+    early = serial[:, 0] <= 0.1
+    diff_early = np.max(np.abs(par[early, 2] - serial[early, 2]))/np.max(np.abs(serial[:, 2]))
+    check("velocity history equal to round-off while the flow keeps it (t <= 0.1 s)", diff_early < 1e-10,
+          "(%.1e)" % diff_early)
+    # later the wake amplifies round-off: the serial run with a different
+    # (converged) solver tolerance moves as far from itself
+    near("terminal velocity, 2 ranks / serial", par[-1, 2]/serial[-1, 2], 1.0, 1e-3)
+
+
+def test_packed_bed():
+    print("packedBedErgun tutorial: 3,500 spheres ramped through fluidisation")
+    case = copy_tutorial("packedBedErgun", "packedBed")
+    rc, out = sh("./Allrun", case, check=False)
+    check("Allrun completed", rc == 0, out[-1500:] if rc else "")
+    print("\n".join("    " + l for l in out.splitlines() if l.startswith(("bed:", "packed", "plateau", "minimum"))))
+    r = results(os.path.join(case, "ergun.result"))
+    check("packed range: pressure gradient inside the bed within 10 % of Ergun (measured porosity)",
+          r["inner_error"] < 0.10, "(largest %.1f %%)" % (100*r["inner_error"]))
+    check("packed range: whole-bed pressure drop within 15 % of Ergun (bed height and porosity measured)",
+          r["packed_error"] < 0.15, "(largest %.1f %%)" % (100*r["packed_error"]))
+    check("fluidised plateau within 5 % of bed weight per area", r["plateau_error"] < 0.05,
+          "(%.1f %%)" % (100*r["plateau_error"]))
+    check("minimum fluidisation velocity within 20 % of Wen-Yu", r["umf_error"] < 0.20,
+          "(%.1f %%)" % (100*r["umf_error"]))
+    check_coupling_log("packedBedErgun", os.path.join(case, "log.pimpleDEMFoam"), 0.2)
+
+
+def test_bad_input():
+    print("bad input: a clear error, a non-zero status, no hang")
+    base = copy_tutorial("settlingSphere", "settle-bad")
+    sh("cp -r 0.orig 0 && blockMesh", base)
+    props = "constant/couplingProperties"
+    cases = [
+        ("unknown drag model", props, r"^dragModel\s+\w+;", "dragModel Stokes;", "Unknown dragModel"),
+        ("unknown void fraction model", props, r"^voidFractionModel\s+\w+;", "voidFractionModel pcm;",
+         "Unknown voidFractionModel"),
+        ("bad formulation", props, r"^formulation\s+A;", "formulation C;", "formulation C is not A"),
+        ("unknown force", props, r"^forces\s+\(.*\);", "forces (lift);", "unknown entry lift"),
+        ("pressure gradient with formulation B", props, r"^formulation\s+A;", "formulation B;",
+         "remove pressureGradient"),
+        ("coupling time not a multiple of deltaT", props, r"^couplingInterval\s+\d+;", "couplingInterval 7;",
+         "not a whole multiple or divisor"),
+        ("zero coupling interval", props, r"^couplingInterval\s+\d+;", "couplingInterval 0;",
+         "couplingInterval must be a positive"),
+        ("adjustable time step", "system/controlDict", r"^adjustTimeStep\s+no;", "adjustTimeStep yes;",
+         "adjustTimeStep"),
+        ("missing DEM script", props, r"^demScript\s+.*;", 'demScript "DEM/in.missing";',
+         "no LIGGGHTS input script"),
+        ("LIGGGHTS input error", "DEM/in.settings", r"^fix integr", "fix integr all nve/spheres\n#",
+         "LIGGGHTS stopped the run"),
+        ("DEM script without couple/cfd/force", "DEM/in.settings", r"^fix cfd2 .*$", "",
+         "has no 'fix couple/cfd/force'"),
+        ("particle outside the mesh", "DEM/in.liggghts", r"0.02 0.02 0.085", "0.02 0.02 0.15",
+         "particles have left the mesh"),
+    ]
+    for name, rel, pattern, replacement, needle in cases:
+        case = os.path.join(WORK, "settle-bad-case")
+        shutil.rmtree(case, ignore_errors=True)
+        shutil.copytree(base, case)
+        edit(os.path.join(case, rel), pattern, replacement)
+        if "outside" in name:
+            edit(os.path.join(case, "DEM", "in.liggghts"), r"0 0.04 0 0.04 0 0.096", "0 0.04 0 0.04 0 0.2")
+        rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
+        check("%s: error says '%s'" % (name, needle),
+              rc not in (0, 124) and needle in out and "Segmentation" not in out,
+              "" if needle in out else out[-600:])
+    # in parallel a LIGGGHTS error stops every rank
+    case = os.path.join(WORK, "settle-bad-case")
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(base, case)
+    edit(os.path.join(case, "DEM", "in.settings"), r"^fix integr", "fix integr all nve/spheres\n#")
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
+    rc, out = sh("decomposePar -force > /dev/null && timeout 120 mpirun -np 2 pimpleDEMFoam -parallel",
+                 case, check=False)
+    check("LIGGGHTS error on 2 ranks: every rank stops, message shown",
+          rc not in (0, 124) and "Invalid fix style" in out, "(status %d)" % rc)
+    # removal instead of an error, when the user asks for it
+    case = os.path.join(WORK, "settle-remove")
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(base, case)
+    edit(os.path.join(case, props), r"^particlesOutside\s+error;", "particlesOutside remove;")
+    edit(os.path.join(case, "DEM", "in.liggghts"), r"0 0.04 0 0.04 0 0.096", "0 0.04 0 0.04 0 0.2")
+    edit(os.path.join(case, "DEM", "in.liggghts"), r"0.02 0.02 0.085", "0.02 0.02 0.15")
+    edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+0.4;", "endTime 0.01;")
+    rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
+    check("particlesOutside remove: the particle is deleted from the DEM and the run goes on",
+          rc == 0 and "removing 1 particles" in out and "coupling 19: 0 particles" in out, out[-400:] if rc else "")
+
+
+def main():
+    checks.run([test_settling_sphere, test_drag_laws, test_restart, test_serial_parallel,
+                test_bad_input, test_packed_bed], sys.argv[1:])
+    return checks.summary("coupling")
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -203,6 +203,23 @@ def test_packed_bed():
     check_coupling_log("packedBedErgun", os.path.join(case, "log.pimpleDEMFoam"), 0.2)
 
 
+def test_fluidised_bed():
+    print("fluidisedBed tutorial: 10,000 beads in air, 1.2 s")
+    case = copy_tutorial("fluidisedBed", "fluidisedBed")
+    rc, out = sh("./Allrun analytical 3 1.2", case, check=False)
+    check("Allrun completed", rc == 0, out[-1500:] if rc else "")
+    print("\n".join("    " + l for l in out.splitlines() if "time-averaged" in l))
+    r = results(os.path.join(case, "fluidisedBed.result"))
+    check("time-averaged pressure drop within 5 % of bed weight per area", r["dp_error"] < 0.05,
+          "(%.1f %%)" % (100*r["dp_error"]))
+    check_coupling_log("fluidisedBed", os.path.join(case, "log.pimpleDEMFoam"), 0.2)
+    print("  every void fraction model runs the bed (0.02 s each)")
+    for model in ("centroid", "voxel", "hybrid", "kernel", "diffusion"):
+        rc, out = sh("./Allrun %s 3 0.02" % model, case, check=False)
+        check("%s: run completed" % model, rc == 0, out[-800:] if rc else "")
+        check_coupling_log(model, os.path.join(case, "log.pimpleDEMFoam"), 0.2)
+
+
 def test_bad_input():
     print("bad input: a clear error, a non-zero status, no hang")
     base = copy_tutorial("settlingSphere", "settle-bad")
@@ -269,7 +286,7 @@ def test_bad_input():
 
 def main():
     checks.run([test_settling_sphere, test_drag_laws, test_restart, test_serial_parallel,
-                test_bad_input, test_packed_bed], sys.argv[1:])
+                test_bad_input, test_packed_bed, test_fluidised_bed], sys.argv[1:])
     return checks.summary("coupling")
 
 

@@ -297,8 +297,10 @@ void Foam::particleFluidCoupling::beginStep
                 continue;
             }
             const scalar a = alphaP[i]/s;
-            const scalar d = 2*particles_.radii()[i];
-            beta_[i] = drag_->beta(d, volumes_[i], a, mag(Up[i]/s - v[i]), rho_, mu);
+            beta_[i] = drag_->beta
+            (
+                {2*particles_.radii()[i], volumes_[i], a, mag(Up[i]/s - v[i]), rho_, mu}
+            );
             if (formulation_ == formulation::B) beta_[i] /= a;
         }
 

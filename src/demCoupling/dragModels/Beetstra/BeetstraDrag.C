@@ -12,23 +12,15 @@ namespace dragModels
 }
 
 
-Foam::scalar Foam::dragModels::Beetstra::beta
-(
-    const scalar d,
-    const scalar Vp,
-    const scalar alpha,
-    const scalar magUr,
-    const scalar rho,
-    const scalar mu
-) const
+Foam::scalar Foam::dragModels::Beetstra::beta(const particleState& p) const
 {
-    const scalar phi = 1 - alpha;
-    const scalar Rep = max(Re(d, alpha, magUr, rho, mu), SMALL);
+    const scalar phi = 1 - p.alpha;
+    const scalar Rep = max(p.Re(), SMALL);
     const scalar inertial =
-        0.413*Rep/(24*sqr(alpha))
-       *(1/alpha + 3*alpha*phi + 8.4*pow(Rep, -0.343))
+        0.413*Rep/(24*sqr(p.alpha))
+       *(1/p.alpha + 3*p.alpha*phi + 8.4*pow(Rep, -0.343))
        /(1 + pow(10.0, 3*phi)*pow(Rep, -0.5*(1 + 4*phi)));
     const scalar F =
-        10*phi/sqr(alpha) + sqr(alpha)*(1 + 1.5*sqrt(phi)) + inertial;
-    return 3*constant::mathematical::pi*mu*d*alpha*F;
+        10*phi/sqr(p.alpha) + sqr(p.alpha)*(1 + 1.5*sqrt(phi)) + inertial;
+    return 3*constant::mathematical::pi*p.mu*p.d*p.alpha*F;
 }

@@ -12,19 +12,11 @@ namespace dragModels
 }
 
 
-Foam::scalar Foam::dragModels::DiFelice::beta
-(
-    const scalar d,
-    const scalar Vp,
-    const scalar alpha,
-    const scalar magUr,
-    const scalar rho,
-    const scalar mu
-) const
+Foam::scalar Foam::dragModels::DiFelice::beta(const particleState& p) const
 {
-    const scalar Rep = max(Re(d, alpha, magUr, rho, mu), VSMALL);
+    const scalar Rep = max(p.Re(), VSMALL);
     // Cd |Ur| = (0.63 sqrt(Re) + 4.8)^2 mu/(alpha rho d): finite as Re -> 0
-    const scalar CdMagUr = sqr(0.63*sqrt(Rep) + 4.8)*mu/(alpha*rho*d);
+    const scalar CdMagUr = sqr(0.63*sqrt(Rep) + 4.8)*p.mu/(p.alpha*p.rho*p.d);
     const scalar chi = 3.7 - 0.65*exp(-0.5*sqr(1.5 - log10(Rep)));
-    return constant::mathematical::pi/8*d*d*rho*CdMagUr*pow(alpha, 2 - chi);
+    return constant::mathematical::pi/8*p.d*p.d*p.rho*CdMagUr*pow(p.alpha, 2 - chi);
 }

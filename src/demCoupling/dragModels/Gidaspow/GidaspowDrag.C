@@ -12,25 +12,17 @@ namespace dragModels
 }
 
 
-Foam::scalar Foam::dragModels::Gidaspow::beta
-(
-    const scalar d,
-    const scalar Vp,
-    const scalar alpha,
-    const scalar magUr,
-    const scalar rho,
-    const scalar mu
-) const
+Foam::scalar Foam::dragModels::Gidaspow::beta(const particleState& p) const
 {
-    if (alpha < 0.8)
+    if (p.alpha < 0.8)
     {
-        return Vp*(150*(1 - alpha)*mu/(alpha*d*d) + 1.75*rho*magUr/d);
+        return p.Vp*(150*(1 - p.alpha)*p.mu/(p.alpha*p.d*p.d) + 1.75*p.rho*p.magUr/p.d);
     }
     // Cd |Ur| written so that it stays finite as the slip vanishes
-    const scalar Rep = Re(d, alpha, magUr, rho, mu);
+    const scalar Rep = p.Re();
     const scalar CdMagUr =
         Rep < 1000
-      ? 24*mu/(alpha*rho*d)*(1 + 0.15*pow(Rep, 0.687))
-      : 0.44*magUr;
-    return Vp*0.75*CdMagUr*rho/d*pow(alpha, -1.65);
+      ? 24*p.mu/(p.alpha*p.rho*p.d)*(1 + 0.15*pow(Rep, 0.687))
+      : 0.44*p.magUr;
+    return p.Vp*0.75*CdMagUr*p.rho/p.d*pow(p.alpha, -1.65);
 }

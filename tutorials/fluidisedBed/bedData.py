@@ -1,0 +1,50 @@
+"""Reading a fluidisedBed run: the particles of a VTK file, the bed weight
+per area, the inlet pressure history and the solver log's extremes."""
+import glob
+import os
+import re
+
+import numpy as np
+
+RHO_F, RHO_P, G, AREA = 1.2, 2500.0, 9.81, 0.048*0.006
+
+
+def read_vtk(path):
+    """positions, radii and velocities of a particles_N.vtk file"""
+    lines = open(path).read().split("\n")
+    n = int(lines[4].split()[1])
+    x = np.array([l.split() for l in lines[5:5 + n]], float)
+    i = lines.index("SCALARS radius double 1") + 2
+    r = np.array(lines[i:i + n], float)
+    i = lines.index("VECTORS velocity double") + 1
+    v = np.array([l.split() for l in lines[i:i + n]], float)
+    return x, r, v
+
+
+def snapshots(case):
+    files = glob.glob(os.path.join(case, "VTK", "particles_*.vtk"))
+    return sorted(files, key=lambda f: int(re.findall(r"_(\d+)\.vtk", f)[0]))
+
+
+def bed_weight(case):
+    _, r, _ = read_vtk(snapshots(case)[0])
+    return np.sum(4/3*np.pi*r**3)*(RHO_P - RHO_F)*G/AREA
+
+
+def pressure_drop(case):
+    data = np.loadtxt(os.path.join(case, "postProcessing", "inletPressure", "0", "surfaceFieldValue.dat"))
+    return data[:, 0], RHO_F*data[:, 1]
+
+
+def log_extremes(case):
+    """finished, min void fraction, max continuity error (sum local), max Courant number"""
+    path = os.path.join(case, "log.pimpleDEMFoam")
+    if not os.path.isfile(path):
+        return False, np.nan, np.nan, np.nan
+    text = open(path).read()
+    alpha = [float(a) for a in re.findall(r"; alpha (\S+?)\.\.", text)]
+    cont = [float(c) for c in re.findall(r"continuity errors : sum local = (\S+),", text)]
+    co = [float(c) for c in re.findall(r"Courant Number max: (\S+)", text)]
+    finished = "\nEnd\n" in text
+    return (finished, min(alpha) if alpha else np.nan, max(cont) if cont else np.nan,
+            max(co) if co else np.nan)

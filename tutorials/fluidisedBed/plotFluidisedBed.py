@@ -1,0 +1,48 @@
+#!/usr/bin/python3
+"""Bubbling bed: pressure drop against time next to the bed weight per area,
+and particle snapshots; prints the time-averaged pressure drop after the
+start-up (t > 0.4 s) and writes fluidisedBed.png and fluidisedBed.result."""
+import re
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+from bedData import bed_weight, pressure_drop, read_vtk, snapshots
+
+weight = bed_weight(".")
+t, dp = pressure_drop(".")
+settled = t > 0.4
+mean = dp[settled].mean()
+fluctuation = dp[settled].std()/mean
+model = re.search(r"^voidFractionModel\s+(\w+);", open("constant/couplingProperties").read(), re.M).group(1)
+print(f"{model}: time-averaged pressure drop (t > 0.4 s) {mean:.1f} Pa, bed weight per area {weight:.1f} Pa "
+      f"({100*(mean/weight - 1):+.1f} %), fluctuation {100*fluctuation:.1f} %")
+with open("fluidisedBed.result", "w") as f:
+    f.write(f"dp_error {abs(mean/weight - 1)}\nfluctuation {fluctuation}\n")
+
+files = snapshots(".")[-4:]
+fig = plt.figure(figsize=(10, 4.6))
+ax = fig.add_subplot(1, len(files) + 2, (1, 2))
+ax.plot(t, dp, lw=0.8, label="pimpleDEMFoam + LIGGGHTS")
+ax.axhline(weight, color="k", ls="--", lw=1, label="bed weight / area")
+ax.axhline(mean, color="C1", ls=":", lw=1, label=f"mean t > 0.4 s ({100*(mean/weight - 1):+.1f} %)")
+ax.set_xlabel("t [s]")
+ax.set_ylabel("pressure drop [Pa]")
+ax.set_ylim(0, 2*weight)
+ax.legend(fontsize=7)
+ax.set_title(f"{model}: 10,000 beads in air", fontsize=9)
+for k, path in enumerate(files):
+    x, r, v = read_vtk(path)
+    a = fig.add_subplot(1, len(files) + 2, k + 3)
+    a.scatter(1e3*x[:, 0], 1e3*x[:, 2], s=0.3, c=v[:, 2], cmap="coolwarm", vmin=-0.3, vmax=0.3)
+    a.set_xlim(0, 48)
+    a.set_ylim(0, 120)
+    a.set_aspect("equal")
+    a.set_xticks([])
+    a.set_yticks([] if k else [0, 40, 80, 120])
+    step = int(re.findall(r"_(\d+)\.vtk", path)[0])
+    a.set_title(f"t = {step*1e-4:.1f} s", fontsize=8)
+plt.tight_layout()
+plt.savefig("fluidisedBed.png", dpi=120)

@@ -22,7 +22,7 @@ print(f"{model}: time-averaged pressure drop (t > 0.4 s) {mean:.1f} Pa, bed weig
 with open("fluidisedBed.result", "w") as f:
     f.write(f"dp_error {abs(mean/weight - 1)}\nfluctuation {fluctuation}\n")
 
-files = snapshots(".")[-4:]
+files = snapshots(".")[-4:]   # none in a run shorter than a write interval
 fig = plt.figure(figsize=(10, 4.6))
 ax = fig.add_subplot(1, len(files) + 2, (1, 2))
 ax.plot(t, dp, lw=0.8, label="pimpleDEMFoam + LIGGGHTS")

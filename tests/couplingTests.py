@@ -52,6 +52,18 @@ def coupling_lines(log):
     return rows
 
 
+def coupling_forces(log):
+    """(most particles on a rank, total fluid force on the particles) per coupling"""
+    pattern = re.compile(r"^coupling \d+: \d+ particles \(at most (\d+) on a rank\).*"
+                         r"total fluid force on the particles \((\S+) (\S+) (\S+)\)")
+    rows = []
+    for line in open(log):
+        m = pattern.match(line)
+        if m:
+            rows.append((int(m.group(1)), tuple(float(m.group(i)) for i in (2, 3, 4))))
+    return rows
+
+
 def check_coupling_log(label, log, alpha_min):
     rows = coupling_lines(log)
     check("%s: coupling steps logged" % label, len(rows) > 10, "(%d)" % len(rows))
@@ -261,11 +273,31 @@ def test_fluidised_bed():
     check("time-averaged pressure drop within 5 % of bed weight per area", r["dp_error"] < 0.05,
           "(%.1f %%)" % (100*r["dp_error"]))
     check_coupling_log("fluidisedBed", os.path.join(case, "log.pimpleDEMFoam"), 0.2)
+    serial_logs = {"analytical": os.path.join(case, "log.analytical")}
+    shutil.copy(os.path.join(case, "log.pimpleDEMFoam"), serial_logs["analytical"])
     print("  every void fraction model runs the bed (0.02 s each)")
     for model in ("centroid", "voxel", "hybrid", "kernel", "diffusion"):
         rc, out = sh("./Allrun %s 3 0.02" % model, case, check=False)
         check("%s: run completed" % model, rc == 0, out[-800:] if rc else "")
         check_coupling_log(model, os.path.join(case, "log.pimpleDEMFoam"), 0.2)
+        serial_logs[model] = os.path.join(case, "log." + model)
+        shutil.copy(os.path.join(case, "log.pimpleDEMFoam"), serial_logs[model])
+    print("  2 ranks against 1: each rank holds only the particles near its cells")
+    for model in ("analytical", "kernel", "diffusion"):
+        rc, out = sh("./Allrun %s 3 0.02 2" % model, case, check=False)
+        check("%s, 2 ranks: run completed" % model, rc == 0, out[-800:] if rc else "")
+        log = os.path.join(case, "log.pimpleDEMFoam")
+        check_coupling_log(model + ", 2 ranks", log, 0.2)
+        par, ser = coupling_forces(log), coupling_forces(serial_logs[model])[:len(coupling_forces(log))]
+        check("%s: 200 couplings on 2 ranks" % model, len(par) >= 200 and len(ser) == len(par),
+              "(%d and %d)" % (len(par), len(ser)))
+        if len(par) and len(ser) == len(par):
+            diff = max(abs(p[1][2] - q[1][2]) for p, q in zip(par, ser))/max(abs(q[1][2]) for q in ser)
+            check("%s: vertical fluid force on the bed, 2 ranks = 1 rank" % model, diff < 1e-6,
+                  "(largest relative difference %.1e)" % diff)
+            held = max(p[0] for p in par)
+            check("%s: no rank holds every particle (at most %d of 10000)" % (model, held),
+                  held < 7000)
 
 
 def test_bad_input():

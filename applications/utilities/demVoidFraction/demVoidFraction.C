@@ -22,6 +22,7 @@ Usage
 #include "fvCFD.H"
 #include "voidFractionModel.H"
 #include "medianCallTime.H"
+#include "particleDistributor.H"
 #include "liggghtsCoupling.H"
 
 int main(int argc, char *argv[])
@@ -69,16 +70,24 @@ int main(int argc, char *argv[])
     autoPtr<liggghtsCoupling> dem;
     if (args.found("liggghts")) dem.reset(new liggghtsCoupling(runTime, dict));
     const fileName dumpFile(args.getOrDefault<fileName>("dump", "").expand());
-    const particleData particles
-    (
-        dem.valid() ? dem->particles() : particleData::readLiggghtsDump(dumpFile)
-    );
-    Info<< "Read " << particles.size() << " particles from "
+    autoPtr<voidFractionModel> model(voidFractionModel::New(dict, mesh));
+    // a dump is read whole on every rank; the DEM's particles go to the
+    // ranks whose cells they reach
+    particleData particles;
+    particleHolders holders;
+    if (dem.valid())
+    {
+        holders = particleDistributor(model()).distribute(dem->particles(), particles);
+    }
+    else
+    {
+        particles = particleData::readLiggghtsDump(dumpFile);
+    }
+    Info<< "Read " << (dem.valid() ? dem->nParticles() : particles.size()) << " particles from "
         << (dem.valid() ? fileName("LIGGGHTS") : dumpFile)
         << " in " << clock.timeIncrement() << " s" << endl;
 
-    autoPtr<voidFractionModel> model(voidFractionModel::New(dict, mesh));
-    model->update(particles);
+    model->update(particles, particleHolders(holders));
     const scalar firstCall = clock.timeIncrement();
     model->report(Info);
 
@@ -86,9 +95,9 @@ int main(int argc, char *argv[])
     Info<< "time per call: first " << firstCall << " s";
     if (repeat > 0)
     {
-        const scalar median = medianCallTime(model(), particles, repeat);
+        const scalar median = medianCallTime(model(), particles, repeat, holders);
         Info<< ", median of " << repeat << " " << median << " s, "
-            << particles.size()/max(median, VSMALL) << " particles/s";
+            << model->stats().nParticles/max(median, VSMALL) << " particles/s";
     }
     Info<< endl;
 

@@ -1,7 +1,6 @@
 #include "liggghtsCoupling.H"
 #include "OSspecific.H"
 #include "Pstream.H"
-#include "ListListOps.H"
 
 #include <cstdio>
 #include <cstdlib>
@@ -120,7 +119,7 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
         },
         "running " + path
     );
-    Info<< "liggghtsCoupling: ran " << path << ": " << particles().size()
+    Info<< "liggghtsCoupling: ran " << path << ": " << nParticles()
         << " particles (LIGGGHTS screen output in " << demDir_/screen << ")" << endl;
 }
 
@@ -145,31 +144,6 @@ void Foam::liggghtsCoupling::run(const label nSteps)
 }
 
 
-namespace
-{
-    //- The concatenation over ranks of each rank's list, the same on all
-    template<class T>
-    Foam::List<T> allRanks(Foam::List<T>&& local)
-    {
-        using namespace Foam;
-        if (!Pstream::parRun()) return std::move(local);
-        List<List<T>> perRank(Pstream::nProcs());
-        perRank[Pstream::myProcNo()] = std::move(local);
-        Pstream::gatherList(perRank);
-        Pstream::scatterList(perRank);
-        return ListListOps::combine<List<T>>(perRank, accessOp<List<T>>());
-    }
-
-    template<class T>
-    Foam::List<T> reordered(const Foam::List<T>& values, const Foam::labelList& order)
-    {
-        Foam::List<T> result(order.size());
-        forAll(order, i) result[i] = values[order[i]];
-        return result;
-    }
-}
-
-
 Foam::particleData Foam::liggghtsCoupling::particles() const
 {
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
@@ -189,18 +163,15 @@ Foam::particleData Foam::liggghtsCoupling::particles() const
         r[i] = atom.radius[i];
         id[i] = label(atom.tag[i]);
     }
-    // in id order, whatever the DEM's decomposition
-    const labelList ids(allRanks(std::move(id)));
-    labelList order;
-    sortedOrder(ids, order);
-    particleData result
-    (
-        pointField(reordered(allRanks(std::move(x)), order)),
-        scalarField(reordered(allRanks(std::move(r)), order)),
-        reordered(ids, order)
-    );
-    result.setVelocities(vectorField(reordered(allRanks(std::move(v)), order)));
+    particleData result(pointField(std::move(x)), scalarField(std::move(r)), std::move(id));
+    result.setVelocities(vectorField(std::move(v)));
     return result;
+}
+
+
+Foam::label Foam::liggghtsCoupling::nParticles() const
+{
+    return label(lmp_->atom->natoms);
 }
 
 
@@ -212,7 +183,7 @@ Foam::scalar Foam::liggghtsCoupling::timeStep() const
 
 void Foam::liggghtsCoupling::setForces
 (
-    const labelList& sortedIds,
+    const labelList& ids,
     const vectorField& forces
 )
 {
@@ -229,13 +200,19 @@ void Foam::liggghtsCoupling::setForces
             << exit(FatalError);
     }
     double** f = static_cast<LAMMPS_NS::FixPropertyAtom*>(fix)->array_atom;
-    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    LAMMPS_NS::Atom& atom = *lmp_->atom;
     for (label i = 0; i < atom.nlocal; ++i)
     {
-        const label k = findSortedIndex(sortedIds, label(atom.tag[i]));
-        const vector& F = k >= 0 ? forces[k] : vector::zero;
-        f[i][0] = F.x();
-        f[i][1] = F.y();
-        f[i][2] = F.z();
+        f[i][0] = f[i][1] = f[i][2] = 0;
+    }
+    forAll(ids, k)
+    {
+        // map() also knows ghost atoms: only the owner's copy gets the force
+        if (ids[k] < 1 || ids[k] > atom.map_tag_max) continue;
+        const int i = atom.map(ids[k]);
+        if (i < 0 || i >= atom.nlocal) continue;
+        f[i][0] = forces[k].x();
+        f[i][1] = forces[k].y();
+        f[i][2] = forces[k].z();
     }
 }

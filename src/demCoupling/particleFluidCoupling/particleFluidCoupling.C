@@ -2,6 +2,8 @@
 #include "fvc.H"
 #include "OFstream.H"
 #include "zeroGradientFvPatchFields.H"
+#include "ListListOps.H"
+#include "UIndirectList.H"
 
 namespace
 {
@@ -143,6 +145,7 @@ Foam::particleFluidCoupling::particleFluidCoupling
     // bad names fail before the DEM starts
     drag_ = dragModel::New(dict_);
     voidFraction_ = voidFractionModel::New(dict_, mesh);
+    distributor_.reset(new particleDistributor(voidFraction_()));
     dem_.reset(new liggghtsCoupling(mesh.time(), dict_));
     readTimeSteps();
 
@@ -151,7 +154,7 @@ Foam::particleFluidCoupling::particleFluidCoupling
     alpha_ = voidFraction_->voidFraction();
     alpha_.oldTime();
     Info<< "particleFluidCoupling: formulation " << form << ", "
-        << particles_.size() << " particles" << endl;
+        << voidFraction_->stats().nParticles << " particles" << endl;
 }
 
 
@@ -202,9 +205,11 @@ void Foam::particleFluidCoupling::readTimeSteps()
 void Foam::particleFluidCoupling::mapParticles()
 {
     clock_.timeIncrement();
-    particles_ = dem_->particles();
+    const particleData owned(dem_->particles());
+    ownedIds_ = owned.ids();
+    particleHolders holders(distributor_->distribute(owned, particles_));
     timeExchange_ += clock_.timeIncrement();
-    voidFraction_->update(particles_);
+    voidFraction_->update(particles_, std::move(holders));
     timeVoidFraction_ += clock_.timeIncrement();
     handleOutside();
 }
@@ -216,17 +221,26 @@ void Foam::particleFluidCoupling::handleOutside()
     if (nOutside == 0) return;
 
     // a particle is outside when no rank holds its centre
-    labelList held(particles_.size(), 0);
-    forAll(held, i)
+    const particleHolders& holders = voidFraction_->holders();
+    labelList found(particles_.size(), 0);
+    forAll(found, i)
     {
-        if (voidFraction_->centreCells()[i] >= 0) held[i] = 1;
+        if (voidFraction_->centreCells()[i] >= 0) found[i] = 1;
     }
-    Pstream::listCombineGather(held, maxEqOp<label>());
-    Pstream::listCombineScatter(held);
-    string ids;
-    forAll(held, i)
+    holders.combine(found, maxEqOp<label>());
+    List<labelList> outside(Pstream::nProcs());
+    DynamicList<label> mine;
+    forAll(found, i)
     {
-        if (!held[i]) ids += " " + Foam::name(particles_.ids()[i]);
+        if (!found[i] && holders.counted(i)) mine.append(particles_.ids()[i]);
+    }
+    outside[Pstream::myProcNo()] = mine;
+    Pstream::gatherList(outside);
+    Pstream::scatterList(outside);
+    string ids;
+    for (const labelList& l : outside)
+    {
+        for (const label id : l) ids += " " + Foam::name(id);
     }
     if (!removeOutside_)
     {
@@ -244,19 +258,58 @@ void Foam::particleFluidCoupling::handleOutside()
 }
 
 
-Foam::vectorField Foam::particleFluidCoupling::gatherVector
-(
-    const volVectorField& field
-)
+template<class Type>
+Type Foam::particleFluidCoupling::sumOverParticles(const UList<Type>& values) const
 {
-    vectorField result(particles_.size(), Zero);
-    scalarField component;
-    for (direction d = 0; d < vector::nComponents; ++d)
+    const particleHolders& holders = voidFraction_->holders();
+    Type sum(pTraits<Type>::zero);
+    forAll(values, i)
     {
-        voidFraction_->gather(field.primitiveField().component(d), component);
-        result.replace(d, component);
+        if (holders.counted(i)) sum += values[i];
     }
-    return result;
+    return returnReduce(sum, sumOp<Type>());
+}
+
+
+Foam::particleData Foam::particleFluidCoupling::particlesOnMaster() const
+{
+    const particleHolders& holders = voidFraction_->holders();
+    DynamicList<label> counted;
+    forAll(particles_.ids(), i)
+    {
+        if (holders.counted(i)) counted.append(i);
+    }
+    List<pointField> x(Pstream::nProcs());
+    List<scalarField> r(Pstream::nProcs());
+    List<labelList> id(Pstream::nProcs());
+    List<vectorField> v(Pstream::nProcs());
+    const label me = Pstream::myProcNo();
+    x[me] = pointField(particles_.positions(), counted);
+    r[me] = scalarField(particles_.radii(), counted);
+    id[me] = labelList(UIndirectList<label>(particles_.ids(), counted));
+    v[me] = vectorField(particles_.velocities(), counted);
+    Pstream::gatherList(x);
+    Pstream::gatherList(r);
+    Pstream::gatherList(id);
+    Pstream::gatherList(v);
+    if (!Pstream::master()) return particleData();
+    const particleData all
+    (
+        ListListOps::combine<pointField>(x, accessOp<pointField>()),
+        ListListOps::combine<scalarField>(r, accessOp<scalarField>()),
+        ListListOps::combine<labelList>(id, accessOp<labelList>())
+    );
+    const vectorField allV(ListListOps::combine<vectorField>(v, accessOp<vectorField>()));
+    labelList order;
+    sortedOrder(all.ids(), order);
+    particleData sorted
+    (
+        pointField(all.positions(), order),
+        scalarField(all.radii(), order),
+        labelList(UIndirectList<label>(all.ids(), order))
+    );
+    sorted.setVelocities(vectorField(allV, order));
+    return sorted;
 }
 
 
@@ -284,7 +337,8 @@ void Foam::particleFluidCoupling::beginStep
         scalarField alphaP;
         voidFraction_->gather(voidFraction_->voidFraction().primitiveField(), alphaP);
         voidFraction_->gather(scalarField(mesh_.nCells(), 1.0), weightSum_);
-        const vectorField Up(gatherVector(U));
+        vectorField Up;
+        voidFraction_->gather(U.primitiveField(), Up);
         const vectorField& v = particles_.velocities();
         const scalar mu = rho_*nu;
         beta_.setSize(n);
@@ -336,7 +390,8 @@ void Foam::particleFluidCoupling::endStep
 {
     timeFluid_ += clock_.timeIncrement();
 
-    const vectorField Up(gatherVector(U));
+    vectorField Up;
+    voidFraction_->gather(U.primitiveField(), Up);
     const vectorField& v = particles_.velocities();
     vectorField drag(beta_*(Up - weightSum_*v));
 
@@ -346,7 +401,7 @@ void Foam::particleFluidCoupling::endStep
         mesh_.V().field()*(Ksl_.primitiveField()*U.primitiveField()
       - dragSource_.primitiveField())
     );
-    const vector particleGain = sum(drag);
+    const vector particleGain = sumOverParticles(drag);
     const scalar error =
         mag(fluidLoss - particleGain)/max(mag(particleGain), VSMALL);
     worstMomentumError_ = max(worstMomentumError_, error);
@@ -355,7 +410,8 @@ void Foam::particleFluidCoupling::endStep
     F += drag;
     if (pressureGradientForce_)
     {
-        const vectorField gradP(gatherVector(fvc::grad(p)()));
+        vectorField gradP;
+        voidFraction_->gather(fvc::grad(p)().primitiveField(), gradP);
         forAll(F, i)
         {
             if (weightSum_[i] > SMALL)
@@ -380,20 +436,33 @@ void Foam::particleFluidCoupling::endStep
 void Foam::particleFluidCoupling::pushForces()
 {
     clock_.timeIncrement();
-    const vectorField F(forceSum_/scalar(fluidStepsPerCoupling_));
-    dem_->setForces(particles_.ids(), F);
+    vectorField F(forceSum_/scalar(fluidStepsPerCoupling_));
+    const vector total = sumOverParticles(F);
+    const particleHolders& holders = voidFraction_->holders();
+    if (holders.distributed())
+    {
+        // the holders agree on each force: one copy goes to its owner
+        holders.toOwners(F);
+        dem_->setForces(ownedIds_, F);
+    }
+    else
+    {
+        dem_->setForces(particles_.ids(), F);
+    }
     timeExchange_ += clock_.timeIncrement();
 
     const voidFractionModel::statistics& s = voidFraction_->stats();
-    Info<< "coupling " << nCouplings_ << ": " << particles_.size()
-        << " particles, seconds DEM " << timeDem_
+    Info<< "coupling " << nCouplings_ << ": " << s.nParticles
+        << " particles (at most "
+        << returnReduce(particles_.size(), maxOp<label>())
+        << " on a rank), seconds DEM " << timeDem_
         << " exchange " << timeExchange_
         << " voidFraction " << timeVoidFraction_
         << " forces " << timeForces_
         << " fluid " << timeFluid_
         << "; alpha " << s.minVoidFraction << ".." << s.maxVoidFraction
         << ", momentum balance " << worstMomentumError_
-        << "; total fluid force on the particles " << sum(F) << endl;
+        << "; total fluid force on the particles " << total << endl;
 
     ++nCouplings_;
     fluidStep_ = 0;
@@ -410,11 +479,12 @@ void Foam::particleFluidCoupling::write()
     // one file from the master
     if (Pstream::master()) mkDir(dir);
     dem_->command("write_restart " + (dir/"DEM.restart"));
+    const particleData all(particlesOnMaster());
     if (!Pstream::master()) return;
 
     mkDir(runTime.globalPath()/"VTK");
     OFstream os(runTime.globalPath()/"VTK"/("particles_" + Foam::name(runTime.timeIndex()) + ".vtk"));
-    const pointField& x = particles_.positions();
+    const pointField& x = all.positions();
     const label n = x.size();
     os  << "# vtk DataFile Version 2.0" << nl
         << "particles at time " << runTime.timeName() << nl
@@ -428,11 +498,11 @@ void Foam::particleFluidCoupling::write()
     for (label i = 0; i < n; ++i) os << "1 " << i << nl;
     os  << "POINT_DATA " << n << nl
         << "SCALARS radius double 1" << nl << "LOOKUP_TABLE default" << nl;
-    for (const scalar r : particles_.radii()) os << r << nl;
+    for (const scalar r : all.radii()) os << r << nl;
     os  << "SCALARS id int 1" << nl << "LOOKUP_TABLE default" << nl;
-    for (const label id : particles_.ids()) os << id << nl;
+    for (const label id : all.ids()) os << id << nl;
     os  << "VECTORS velocity double" << nl;
-    for (const vector& u : particles_.velocities())
+    for (const vector& u : all.velocities())
     {
         os  << u.x() << ' ' << u.y() << ' ' << u.z() << nl;
     }

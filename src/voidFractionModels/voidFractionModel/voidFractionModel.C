@@ -73,8 +73,7 @@ Foam::voidFractionModel::voidFractionModel
 
 void Foam::voidFractionModel::collectStatistics(const particleData& particles)
 {
-    // every processor holds every particle of the step here (the utility
-    // reads the whole dump): the per-particle sums are reduced over ranks
+    // per-particle sums over the holders; each particle is added once
     const label n = particles.size();
     scalarField& fractionSum = fractionSum_;
     labelList& found = found_;
@@ -85,22 +84,57 @@ void Foam::voidFractionModel::collectStatistics(const particleData& particles)
         fractionSum[p] = weights_.sum(p);
         found[p] = (centreCells_[p] >= 0);
     }
-    combineOverRanks(fractionSum, plusEqOp<scalar>());
-    combineOverRanks(found, plusEqOp<label>());
+    holders_.combine(fractionSum, plusEqOp<scalar>());
+    holders_.combine(found, plusEqOp<label>());
     const scalarField& r = particles.radii();
     for (label p = 0; p < n; ++p)
     {
+        if (!holders_.counted(p)) continue;
+        ++stats_.nParticles;
         const scalar Vp = particleVolume(r[p]);
         stats_.particleVolume += Vp;
         stats_.meshedVolume += fractionSum[p]*Vp;
         if (!found[p]) ++stats_.nOutside;
         else if (fractionSum[p] < 1 - 1e-9) ++stats_.nCut;
     }
+    reduce(stats_.nParticles, sumOp<label>());
+    reduce(stats_.nOutside, sumOp<label>());
+    reduce(stats_.nCut, sumOp<label>());
+    reduce(stats_.particleVolume, sumOp<scalar>());
+    reduce(stats_.meshedVolume, sumOp<scalar>());
 }
 
 
-void Foam::voidFractionModel::update(const particleData& particles)
+void Foam::voidFractionModel::carryHints(const labelList& ids)
 {
+    if (ids == hintIds_) return;
+    labelList hints(ids.size(), -1);
+    auto ascending = [](const labelList& l)
+    {
+        for (label i = 1; i < l.size(); ++i) if (l[i] <= l[i - 1]) return false;
+        return true;
+    };
+    if (ascending(ids) && ascending(hintIds_))
+    {
+        label j = 0;
+        forAll(ids, i)
+        {
+            while (j < hintIds_.size() && hintIds_[j] < ids[i]) ++j;
+            if (j < hintIds_.size() && hintIds_[j] == ids[i]) hints[i] = hints_[j];
+        }
+    }
+    hints_.transfer(hints);
+    hintIds_ = ids;
+}
+
+
+void Foam::voidFractionModel::update
+(
+    const particleData& particles,
+    particleHolders&& holders
+)
+{
+    holders_ = std::move(holders);
     const label n = particles.size();
     if (twoD_)
     {
@@ -117,9 +151,8 @@ void Foam::voidFractionModel::update(const particleData& particles)
     const UList<scalar>& r =
         periodic ? static_cast<const UList<scalar>&>(entryRadii_) : particles.radii();
 
-    // hints from the previous step are valid while the particle list is;
     // images lie outside the mesh unless a particle is outside it
-    if (hints_.size() != n) hints_.setSize(n, -1);
+    carryHints(particles.ids());
     centreCells_.setSize(x.size());
     forAll(x, i)
     {
@@ -151,7 +184,6 @@ void Foam::voidFractionModel::update(const particleData& particles)
     centreCells_.setSize(n);
 
     stats_ = statistics();
-    stats_.nParticles = n;
     particleVolumes_.setSize(n);
     forAll(particleVolumes_, p)
     {
@@ -193,33 +225,6 @@ void Foam::voidFractionModel::spread
         }
     }
     smoothVolumes(perCell);
-}
-
-
-void Foam::voidFractionModel::gather
-(
-    const scalarField& perCell,
-    scalarField& perParticle
-)
-{
-    // the smoothing S acts on volumes as V M^-1 with M symmetric, so its
-    // transpose on an intensive field f is S(V f)/V
-    const scalarField& V = mesh_.V();
-    scalarField transposed(perCell*V);
-    smoothVolumes(transposed);
-    transposed /= V;
-
-    perParticle.setSize(weights_.nParticles());
-    forAll(perParticle, p)
-    {
-        scalar sum = 0;
-        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
-        {
-            sum += weights_.fraction(k)*transposed[weights_.cell(k)];
-        }
-        perParticle[p] = sum;
-    }
-    combineOverRanks(perParticle, plusEqOp<scalar>());
 }
 
 

@@ -363,11 +363,9 @@ void Foam::particleFluidCoupling::beginStep
         const scalarField& V = mesh_.V();
         Ksl_.primitiveFieldRef() = cellBeta/(rho_*V);
         Ksl_.correctBoundaryConditions();
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            voidFraction_->spread(beta_*v.component(d), cellBeta);
-            dragSource_.primitiveFieldRef().replace(d, cellBeta/(rho_*V));
-        }
+        vectorField cellBetaV;
+        voidFraction_->spread(vectorField(beta_*v), cellBetaV);
+        dragSource_.primitiveFieldRef() = cellBetaV/(rho_*V);
         dragSource_.correctBoundaryConditions();
         forceSum_ = vectorField(n, Zero);
         timeForces_ += clock_.timeIncrement();

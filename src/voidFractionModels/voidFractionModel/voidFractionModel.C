@@ -209,25 +209,6 @@ void Foam::voidFractionModel::update
 }
 
 
-void Foam::voidFractionModel::spread
-(
-    const scalarField& perParticle,
-    scalarField& perCell
-)
-{
-    perCell.setSize(mesh_.nCells());
-    perCell = 0;
-    forAll(perParticle, p)
-    {
-        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
-        {
-            perCell[weights_.cell(k)] += weights_.fraction(k)*perParticle[p];
-        }
-    }
-    smoothVolumes(perCell);
-}
-
-
 void Foam::voidFractionModel::distributeToCentreCells()
 {
     for (const label celli : centreCells_)

@@ -1,6 +1,38 @@
 #include "voidFractionModel.H"
 
 template<class Type>
+void Foam::voidFractionModel::smoothComponents(Field<Type>& cellValues)
+{
+    for (direction d = 0; d < pTraits<Type>::nComponents; ++d)
+    {
+        scalarField component(cellValues.component(d));
+        smoothVolumes(component);
+        cellValues.replace(d, component);
+    }
+}
+
+
+template<class Type>
+void Foam::voidFractionModel::spread
+(
+    const Field<Type>& perParticle,
+    Field<Type>& perCell
+)
+{
+    perCell.setSize(mesh_.nCells());
+    perCell = pTraits<Type>::zero;
+    forAll(perParticle, p)
+    {
+        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+        {
+            perCell[weights_.cell(k)] += weights_.fraction(k)*perParticle[p];
+        }
+    }
+    if (smooths()) smoothComponents(perCell);
+}
+
+
+template<class Type>
 void Foam::voidFractionModel::gather
 (
     const Field<Type>& perCell,
@@ -15,12 +47,7 @@ void Foam::voidFractionModel::gather
         const scalarField& V = mesh_.V();
         tTransposed = perCell*V;
         Field<Type>& transposed = tTransposed.ref();
-        for (direction d = 0; d < pTraits<Type>::nComponents; ++d)
-        {
-            scalarField component(transposed.component(d));
-            smoothVolumes(component);
-            transposed.replace(d, component);
-        }
+        smoothComponents(transposed);
         transposed /= V;
     }
     const Field<Type>& f = tTransposed();

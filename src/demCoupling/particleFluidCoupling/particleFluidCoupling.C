@@ -336,7 +336,7 @@ void Foam::particleFluidCoupling::beginStep
         }
         scalarField alphaP;
         voidFraction_->gather(voidFraction_->voidFraction().primitiveField(), alphaP);
-        voidFraction_->gather(scalarField(mesh_.nCells(), 1.0), weightSum_);
+        voidFraction_->weightSums(weightSum_);
         vectorField Up;
         voidFraction_->gather(U.primitiveField(), Up);
         const vectorField& v = particles_.velocities();

@@ -37,6 +37,17 @@ bool Foam::particleDistributor::meets
 }
 
 
+const Foam::labelList& Foam::particleDistributor::idOrder(const labelList& ids) const
+{
+    if (ids != lastIds_)
+    {
+        sortedOrder(ids, lastOrder_);
+        lastIds_ = ids;
+    }
+    return lastOrder_;
+}
+
+
 Foam::particleHolders Foam::particleDistributor::distribute
 (
     const particleData& owned,
@@ -46,8 +57,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
     if (!Pstream::parRun())
     {
         // one rank holds all: only the id order to make
-        labelList order;
-        sortedOrder(owned.ids(), order);
+        const labelList& order = idOrder(owned.ids());
         held = particleData
         (
             pointField(owned.positions(), order),
@@ -129,9 +139,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
     {
         for (const label id : ids) allIds[k++] = id;
     }
-    labelList order;
-    sortedOrder(allIds, order);
-    const labelList slot(invert(nHeld, order));
+    const labelList slot(invert(nHeld, idOrder(allIds)));
     labelListList constructMap(nProcs);
     k = 0;
     forAll(receivedIds, rank)

@@ -362,6 +362,13 @@ def test_bad_input():
     rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
     check("particlesOutside remove: the particle is deleted from the DEM and the run goes on",
           rc == 0 and "removing 1 particles" in out and "coupling 19: 0 particles" in out, out[-400:] if rc else "")
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
+    rc, out = sh("decomposePar -force > /dev/null && "
+                 "timeout 120 mpirun -np 2 pimpleDEMFoam -parallel", case, check=False)
+    check("particlesOutside remove on 2 ranks: the particle no rank's cells reach is deleted",
+          rc == 0 and "removing 1 particles" in out and "coupling 19: 0 particles" in out, out[-400:] if rc else "")
 
 
 def main():

@@ -203,9 +203,43 @@ def test_bad_input():
     check("missing dump file: error", rc != 0 and "missing.dump" in out)
 
 
+def test_keep_weights():
+    print("keepDistance: particles that moved less keep last step's weights")
+    cyc = {"xmin": "type cyclic; neighbourPatch xmax;", "xmax": "type cyclic; neighbourPatch xmin;"}
+    case = new_case(os.path.join(WORK, "keep"), box_block_mesh(LO, HI, (10, 10, 10), patches=cyc))
+    c, r = random_spheres(1000, 0.0004, 0.0012, LO, HI, seed=8, periodic_axes=(0,))
+    # particles well inside move by 1e-7 m (kept at keepDistance 1e-6), the
+    # rest, including all near the periodic sides, by 2e-4 m (recomputed)
+    small = [0.3 * L < p[0] < 0.7 * L for p in c]
+    moved = [(p[0], p[1] + (1e-7 if s else 2e-4), p[2]) for p, s in zip(c, small)]
+    expected = [p if s else q for p, q, s in zip(c, moved, small)]
+    write_dump(os.path.join(case, "before.dump"), c, r)
+    write_dump(os.path.join(case, "after.dump"), moved, r)
+    write_dump(os.path.join(case, "expected.dump"), expected, r)
+    for model in ("analytical", "hybrid", "kernel"):
+        set_coupling(case, "voidFractionModel %s;\nalphaMin 0.05;\nkeepDistance 1e-6;\n" % model)
+        rc, out = sh("demVoidFraction -previous before.dump -dump after.dump -name kept", case, check=False)
+        kept = re.search(r"particles that kept their weights (\d+)", out)
+        check("%s: the slow particles kept their weights" % model, rc == 0 and kept and int(kept.group(1)) == sum(small),
+              "(%s of %d)" % (kept.group(1) if kept else "?", sum(small)))
+        set_coupling(case, "voidFractionModel %s;\nalphaMin 0.05;\n" % model)
+        rc2, _ = sh("demVoidFraction -dump expected.dump -name expected", case, check=False)
+        if rc == 0 and rc2 == 0:
+            a = read_scalar_field(os.path.join(case, "0", "kept"))
+            b = read_scalar_field(os.path.join(case, "0", "expected"))
+            near("%s: field = the field of the kept rows' positions, max |d alpha|" % model,
+                 max(abs(x - y) for x, y in zip(a, b)), 0, 1e-12)
+    rc, out = sh("demVoidFraction -previous before.dump -dump after.dump", case, check=False)
+    check("keepDistance absent: nothing kept", rc == 0 and "particles that kept their weights 0" in out)
+    set_coupling(case, "voidFractionModel analytical;\nkeepDistance -1;\n")
+    rc, out = sh("demVoidFraction -dump after.dump", case, check=False)
+    check("negative keepDistance: clear error", rc != 0 and "keepDistance must be" in out)
+
+
 def main():
     checks.run([test_closed_forms, test_meshes, test_fast_against_general, test_cyclic,
-                test_alpha_min, test_parallel, test_liggghts_in_process, test_bad_input], sys.argv[1:])
+                test_alpha_min, test_parallel, test_keep_weights, test_liggghts_in_process,
+                test_bad_input], sys.argv[1:])
     return checks.summary("models")
 
 

@@ -12,13 +12,20 @@ after the seed's calibration study (its sections 4 and 5).
    measures the error against analytical (Eq. 21), the smoothness (Eq. 22),
    conservation and the median time per call; X = 3 also on 2 MPI ranks
    (the periodic box split across a periodic direction).
+2b. 2D: LIGGGHTS (dimension 2) packs 10,000 disks with radii from a Gaussian
+   (mean 1.75, sd 0.375, truncated to [1, 2.5] mm, after the seed's sample
+   10000gr12p5fb0a) in a periodic square to an area fraction of 0.82; a
+   one-cell-thick periodic mesh with empty front and back, twoDimensional
+   true, every model over its parameter from the seed's 2D defaults.
 3. Scale: the periodic sample tiled k^3 times (8e3 to 1e6 particles), every
    model at its defaults, X = 3: time per particle against particle count.
 4. Writes build/study/results.csv and the plots pareto.png, smoothness.png,
    optimalParameter.png, scaling.png; prints the README table for X = 3.
 
-usage: study.py [--quick]   (--quick: 3 repeats instead of 10, tiles up to 3^3;
-                             about a minute once the packing exists)
+usage: study.py [--quick] [--2d]
+       --quick: 3 repeats instead of 10, tiles up to 3^3; about a minute once
+                the packings exist
+       --2d:    only the 2D disk sample (its rows in results.csv replaced)
 """
 import csv
 import math
@@ -31,6 +38,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "..", "tests"))
 from foamCase import ROOT, box_block_mesh, new_case, set_coupling, sh  # noqa: E402
 
 QUICK = "--quick" in sys.argv
+ONLY_2D = "--2d" in sys.argv
 WORK = os.path.join(ROOT, "build", "study")
 CSV = os.path.join(WORK, "results.csv")
 REPEAT = 3 if QUICK else 10
@@ -47,6 +55,17 @@ SWEEPS = [
     ("kernel", "bandwidthOverCellSize", [0.4, 0.2, 0.3, 0.5, 0.6, 0.8]),
     ("diffusion", "coefficient", [0.12, 0.03, 0.06, 0.2, 0.3, 0.5, 0.8, 1.2]),
 ]
+
+
+# the same sweeps from the seed's 2D calibration (first: the 2D default)
+SWEEPS_2D = [
+    ("centroid", None, [None]),
+    ("voxel", "voxelsPerSide", [300, 100, 600]),
+    ("hybrid", "subGridResolution", [50, 10, 20]),
+    ("kernel", "bandwidthOverCellSize", [1.0, 0.2, 0.3, 0.4, 0.6, 0.8, 1.2, 1.5]),
+    ("diffusion", "coefficient", [0.17, 0.06, 0.12, 0.3, 0.5, 0.8]),
+]
+DISKS = "G2D"
 
 
 def log(msg):
@@ -72,6 +91,42 @@ def make_packing(name, n, r_mean, cu, mu, phi=0.62, seed=10007):
     var.update({"r%d" % (k + 1): r for k, r in enumerate(radii)})
     args = " ".join("-var %s %s" % (k, v) for k, v in var.items())
     sh("liggghts -in %s/in.periodicPacking %s -log %s.log -screen %s.screen" % (HERE, args, dump, dump), out_dir)
+    return dump, L1
+
+
+def make_disk_packing(n=10000, phi=0.82, seed=5):
+    """LIGGGHTS 2D periodic packing of Gaussian disks; returns (dump, side)."""
+    import random
+    out_dir = os.path.join(WORK, "packings")
+    os.makedirs(out_dir, exist_ok=True)
+    dump = os.path.join(out_dir, DISKS + ".dump")
+    rng = random.Random(seed)
+    radii = []
+    while len(radii) < n:
+        r = rng.gauss(1.75, 0.375)
+        if 1 <= r <= 2.5:
+            radii.append(r * 1e-3)
+    area = sum(math.pi * r * r for r in radii)
+    L0, L1 = math.sqrt(area / 0.3), math.sqrt(area / phi)
+    if os.path.isfile(dump):
+        return dump, L1
+    log("LIGGGHTS: packing %s (%d disks, Gaussian radii)" % (DISKS, n))
+    # loose start on a jittered grid whose pitch exceeds the largest diameter
+    m = math.ceil(math.sqrt(n))
+    pitch = L0 / m
+    data = os.path.join(out_dir, DISKS + ".data")
+    with open(data, "w") as f:
+        f.write("disks\n\n%d atoms\n1 atom types\n\n0 %.17g xlo xhi\n0 %.17g ylo yhi\n"
+                "-0.003 0.003 zlo zhi\n\nAtoms\n\n" % (n, L0, L0))
+        for i, r in enumerate(radii):
+            j = 0.45 * (pitch - 2 * r)
+            x = ((i % m) + 0.5) * pitch + rng.uniform(-j, j)
+            y = ((i // m) + 0.5) * pitch + rng.uniform(-j, j)
+            f.write("%d 1 %.17g 2500 %.17g %.17g 0\n" % (i + 1, 2 * r, x, y))
+    var = {"data": data, "L1": L1, "mu": 0.0, "skin": 3e-4, "compressSteps": 20000,
+           "relaxSteps": 10000, "out": dump}
+    args = " ".join("-var %s %s" % (k, v) for k, v in var.items())
+    sh("liggghts -in %s/in.diskPacking %s -log %s.log -screen %s.screen" % (HERE, args, dump, dump), out_dir)
     return dump, L1
 
 
@@ -114,10 +169,17 @@ def bench_dict(runs):
     return body + "}\n"
 
 
-def run_case(name, dump, L, X, r_max, runs, nprocs=1, sample=None):
+def run_case(name, dump, L, X, r_max, runs, nprocs=1, sample=None, two_d=False):
     n = max(1, round(L / (X * 2 * r_max)))
-    case = new_case(os.path.join(WORK, name), box_block_mesh((0, 0, 0), (L, L, L), (n, n, n), patches=PERIODIC),
-                    coupling="voidFractionModel analytical;\nalphaMin 0;\n")
+    if two_d:
+        # one cell thick, the disks on its mid-plane z = 0
+        patches = {k: v for k, v in PERIODIC.items() if k[0] != "z"}
+        patches.update(zmin="type empty;", zmax="type empty;")
+        mesh = box_block_mesh((0, 0, -r_max), (L, L, r_max), (n, n, 1), patches=patches)
+    else:
+        mesh = box_block_mesh((0, 0, 0), (L, L, L), (n, n, n), patches=PERIODIC)
+    case = new_case(os.path.join(WORK, name), mesh, coupling="voidFractionModel analytical;\nalphaMin 0;\n"
+                    + ("twoDimensional true;\n" if two_d else ""))
     with open(os.path.join(case, "system", "voidFractionBenchmarkDict"), "w") as f:
         f.write(bench_dict(runs))
     sample = sample or os.path.basename(dump)[:-5]
@@ -128,12 +190,28 @@ def run_case(name, dump, L, X, r_max, runs, nprocs=1, sample=None):
            % (nprocs, dump, sample), case)
 
 
-def sweep_runs():
+def sweep_runs(sweeps=SWEEPS):
     runs = []
-    for model, key, values in SWEEPS:
+    for model, key, values in sweeps:
         for v in values:
             runs.append(("%s_%s" % (model, v) if key else model, model, key, v))
     return runs
+
+
+def disk_study():
+    dump, L = make_disk_packing()
+    centres, radii = read_dump(dump)
+    r_max = max(radii)
+    phi = sum(math.pi * r * r for r in radii) / L ** 2
+    log("%s: %d disks, area fraction %.3f" % (DISKS, len(radii), phi))
+    done = set()
+    for X in (2, 2.5, 3, 4, 5, 6):
+        n = max(1, round(L / (X * 2 * r_max)))
+        if n in done:
+            continue
+        done.add(n)
+        log("%s, X = %.2f (%d^2 cells): every model over its parameter" % (DISKS, L / n / (2 * r_max), n))
+        run_case("%s-X%g" % (DISKS, X), dump, L, X, r_max, sweep_runs(SWEEPS_2D), two_d=True)
 
 
 def default_runs():
@@ -190,8 +268,8 @@ def plots(rows):
 
     # optimal (least error) kernel b/ds and diffusion coefficient against X
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))
-    for k, (model, seed_value) in enumerate((("kernel", 0.4), ("diffusion", 0.12))):
-        for sample in sorted({r["sample"] for r in serial if r["sample"] in ("L1.2a", "L3a")}):
+    for k, (model, seed_value, seed_2d) in enumerate((("kernel", 0.4, 1.0), ("diffusion", 0.12, 0.17))):
+        for sample in sorted({r["sample"] for r in serial if r["sample"] in ("L1.2a", "L3a", DISKS)}):
             sel = [r for r in serial if r["sample"] == sample and r["model"] == model]
             best = []
             for X in sorted({round(float(r["X"]), 2) for r in sel}):
@@ -200,7 +278,8 @@ def plots(rows):
                 best.append((X, float(b["parameter"])))
             if best:
                 ax[k].plot(*zip(*best), "o-", label="least error, %s" % sample)
-        ax[k].axhline(seed_value, color="k", ls=":", label="seed's calibration")
+        ax[k].axhline(seed_value, color="k", ls=":", label="seed's calibration, 3D")
+        ax[k].axhline(seed_2d, color="k", ls="--", label="seed's calibration, 2D")
         ax[k].set_xlabel("X")
         ax[k].set_ylabel("b/ds" if model == "kernel" else "coefficient a")
         ax[k].set_title(model)
@@ -234,7 +313,7 @@ def nearest_X(rows, sample, X):
     return min(Xs, key=lambda x: abs(x - X))
 
 
-def table(rows, X3, sample_name="L1.2a"):
+def table(rows, X3, sample_name="L1.2a", sweeps=SWEEPS):
     out = []
     for sample, nprocs in ((sample_name, "1"), (sample_name, "2")):
         sel = [r for r in rows if r["sample"] == sample and round(float(r["X"]), 2) == X3
@@ -245,7 +324,7 @@ def table(rows, X3, sample_name="L1.2a"):
         out.append("| %s, %s rank%s | error (%%) | smoothness (1/m) | conservation | time (s) | time / PCM |"
                    % (sample, nprocs, "" if nprocs == "1" else "s"))
         out.append("|---|---|---|---|---|---|")
-        for model, key, values in [("analytical", None, [None])] + SWEEPS:
+        for model, key, values in [("analytical", None, [None])] + sweeps:
             run = "reference" if model == "analytical" else (model if key is None else "%s_%s" % (model, values[0]))
             r = next((r for r in sel if r["run"] == run), None)
             if r:
@@ -258,6 +337,19 @@ def table(rows, X3, sample_name="L1.2a"):
 
 def main():
     os.makedirs(WORK, exist_ok=True)
+    if ONLY_2D:
+        kept = [r for r in load() if r["sample"] != DISKS] if os.path.exists(CSV) else []
+        if kept:
+            with open(CSV, "w", newline="") as f:
+                w = csv.DictWriter(f, fieldnames=list(kept[0].keys()))
+                w.writeheader()
+                w.writerows(kept)
+        elif os.path.exists(CSV):
+            os.remove(CSV)
+        disk_study()
+        rows = load()
+        print(table(rows, nearest_X(rows, DISKS, 3), DISKS, SWEEPS_2D))
+        return
     if os.path.exists(CSV):
         os.remove(CSV)
     # the seed's Table 4 samples L1.2a and (full study) L3a, frictionless
@@ -289,9 +381,11 @@ def main():
         path = tile(dump, L, k)
         log("scale: %d particles" % (count * k ** 3))
         run_case("tile%d" % k, path, k * L, 3, r_max, default_runs(), sample="tile%d" % k)
+    disk_study()
     rows = load()
     X3 = plots(rows)
     print(table(rows, X3))
+    print(table(rows, nearest_X(rows, DISKS, 3), DISKS, SWEEPS_2D))
     if "L3a" in packed:
         print(table(rows, nearest_X(rows, "L3a", 3), "L3a"))
     # peak memory of a whole benchmark process (dump, mesh, every model in

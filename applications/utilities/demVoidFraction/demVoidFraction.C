@@ -38,6 +38,12 @@ int main(int argc, char *argv[])
     argList::addOption("model", "name", "override the voidFractionModel");
     argList::addOption("repeat", "N", "time N further calls (median)");
     argList::addOption("name", "field", "write the field under this name");
+    argList::addOption
+    (
+        "previous", "file",
+        "map this dump first, as the step before (keepDistance keeps the rows"
+        " of particles that moved less)"
+    );
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -87,6 +93,14 @@ int main(int argc, char *argv[])
         << (dem.valid() ? fileName("LIGGGHTS") : dumpFile)
         << " in " << clock.timeIncrement() << " s" << endl;
 
+    if (args.found("previous"))
+    {
+        model->update
+        (
+            particleData::readLiggghtsDump(args.get<fileName>("previous").expand())
+        );
+        clock.timeIncrement();
+    }
     model->update(particles, particleHolders(holders));
     const scalar firstCall = clock.timeIncrement();
     model->report(Info);

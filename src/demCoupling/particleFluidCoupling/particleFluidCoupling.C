@@ -460,7 +460,8 @@ void Foam::particleFluidCoupling::pushForces()
         << " fluid " << timeFluid_
         << "; alpha " << s.minVoidFraction << ".." << s.maxVoidFraction
         << ", momentum balance " << worstMomentumError_
-        << "; total fluid force on the particles " << total << endl;
+        << "; total fluid force on the particles " << total
+        << "; weights kept " << s.nKept << endl;
 
     ++nCouplings_;
     fluidStep_ = 0;

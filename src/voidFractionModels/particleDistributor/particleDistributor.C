@@ -73,7 +73,6 @@ Foam::particleHolders Foam::particleDistributor::distribute
 
     const label nProcs = Pstream::nProcs();
     const List<vector>& shifts = model_.periodicShifts();
-    const boundBox& whole = model_.globalBounds();
     const pointField& x = owned.positions();
     const scalarField& r = owned.radii();
 
@@ -81,12 +80,8 @@ Foam::particleHolders Foam::particleDistributor::distribute
     forAll(x, p)
     {
         const scalar R = model_.reach(r[p]);
-        // only a particle near a side of the box has images that matter
-        const bool nearSide = shifts.size() && !meets
-        (
-            boundBox(whole.min() + vector::uniform(R), whole.max() - vector::uniform(R)),
-            x[p], 0
-        );
+        // only a particle near a periodic side has images that matter
+        const bool nearSide = model_.nearPeriodicSide(x[p], R);
         bool sent = false;
         for (label rank = 0; rank < nProcs; ++rank)
         {

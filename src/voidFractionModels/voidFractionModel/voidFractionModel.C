@@ -1,6 +1,7 @@
 #include "voidFractionModel.H"
 #include "mathematicalConstants.H"
 #include "zeroGradientFvPatchFields.H"
+#include "UIndirectList.H"
 
 namespace Foam
 {
@@ -25,6 +26,7 @@ Foam::voidFractionModel::voidFractionModel
     slabMid_(0),
     thickness_(0),
     globalBounds_(mesh.bounds()),
+    keepDistance_(dict.lookupOrDefault<scalar>("keepDistance", 0)),
     nParticles_(0),
     solid_(mesh.nCells(), 0),
     voidFraction_
@@ -42,6 +44,12 @@ Foam::voidFractionModel::voidFractionModel
         zeroGradientFvPatchScalarField::typeName
     )
 {
+    if (!(keepDistance_ >= 0) || !std::isfinite(keepDistance_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keepDistance must be zero (off) or a positive distance, got "
+            << keepDistance_ << exit(FatalIOError);
+    }
     if (!(alphaMin_ >= 0 && alphaMin_ < 1))
     {
         FatalIOErrorInFunction(dict)
@@ -107,8 +115,14 @@ void Foam::voidFractionModel::collectStatistics(const particleData& particles)
 
 void Foam::voidFractionModel::carryHints(const labelList& ids)
 {
-    if (ids == hintIds_) return;
+    if (ids == hintIds_)
+    {
+        previous_ = identity(ids.size());
+        return;
+    }
     labelList hints(ids.size(), -1);
+    previous_.setSize(ids.size());
+    previous_ = -1;
     auto ascending = [](const labelList& l)
     {
         for (label i = 1; i < l.size(); ++i) if (l[i] <= l[i - 1]) return false;
@@ -120,11 +134,60 @@ void Foam::voidFractionModel::carryHints(const labelList& ids)
         forAll(ids, i)
         {
             while (j < hintIds_.size() && hintIds_[j] < ids[i]) ++j;
-            if (j < hintIds_.size() && hintIds_[j] == ids[i]) hints[i] = hints_[j];
+            if (j < hintIds_.size() && hintIds_[j] == ids[i])
+            {
+                hints[i] = hints_[j];
+                previous_[i] = j;
+            }
         }
     }
     hints_.transfer(hints);
     hintIds_ = ids;
+}
+
+
+void Foam::voidFractionModel::computeRows
+(
+    const UList<point>& x0,
+    const scalarField& r0,
+    const labelUList& centres
+)
+{
+    // without cyclic patches the particles are the entries (no copy)
+    const label n = x0.size();
+    const bool periodic = periodicShifts_.size();
+    nParticles_ = n;
+    if (periodic) makeImages(x0, r0);
+    const UList<point>& x = periodic ? static_cast<const UList<point>&>(entries_) : x0;
+    const UList<scalar>& r = periodic ? static_cast<const UList<scalar>&>(entryRadii_) : r0;
+
+    // images lie outside the mesh unless a particle is outside it
+    centreCells_.setSize(x.size());
+    forAll(x, i)
+    {
+        centreCells_[i] = (i < n) ? centres[i]
+          : globalBounds_.contains(x[i]) ? locator_.findCell(x[i]) : -1;
+    }
+    computedImages_.setSize(n);
+    forAll(computedImages_, p)
+    {
+        computedImages_[p] = periodic && imageOffsets_[p + 1] > imageOffsets_[p];
+    }
+
+    weights_.clear();
+    distribute(x, r);
+    if (weights_.nParticles() != x.size())
+    {
+        FatalErrorInFunction
+            << type() << " produced weights for " << weights_.nParticles()
+            << " of " << x.size() << " particles and images" << abort(FatalError);
+    }
+    if (x.size() > n)
+    {
+        // most images reach no cell of this processor: nothing to merge
+        if (weights_.begin(n) == weights_.size()) weights_.truncate(n);
+        else mergeImageRows();
+    }
 }
 
 
@@ -143,47 +206,31 @@ void Foam::voidFractionModel::update
     }
     const UList<point>& x0 = twoD_ ? projected_ : particles.positions();
 
-    // without cyclic patches the particles are the entries (no copy)
-    const bool periodic = periodicShifts_.size();
-    nParticles_ = n;
-    if (periodic) makeImages(x0, particles.radii());
-    const UList<point>& x = periodic ? static_cast<const UList<point>&>(entries_) : x0;
-    const UList<scalar>& r =
-        periodic ? static_cast<const UList<scalar>&>(entryRadii_) : particles.radii();
-
-    // images lie outside the mesh unless a particle is outside it
+    const scalarField& r = particles.radii();
     carryHints(particles.ids());
-    centreCells_.setSize(x.size());
-    forAll(x, i)
+    forAll(x0, i)
     {
-        if (i < n)
-        {
-            hints_[i] = locator_.findCell(x[i], hints_[i]);
-            centreCells_[i] = hints_[i];
-        }
-        else
-        {
-            centreCells_[i] = globalBounds_.contains(x[i]) ? locator_.findCell(x[i]) : -1;
-        }
+        hints_[i] = locator_.findCell(x0[i], hints_[i]);
     }
-
-    weights_.clear();
-    distribute(x, r);
-    if (weights_.nParticles() != x.size())
+    selectMoved(x0, r);
+    if (moved_.size() == n)
     {
-        FatalErrorInFunction
-            << type() << " produced weights for " << weights_.nParticles()
-            << " of " << x.size() << " particles and images" << abort(FatalError);
+        computeRows(x0, r, hints_);
     }
-    if (x.size() > n)
+    else
     {
-        // most images reach no cell of this processor: nothing to merge
-        if (weights_.begin(n) == weights_.size()) weights_.truncate(n);
-        else mergeImageRows();
+        computeRows
+        (
+            pointField(x0, moved_),
+            scalarField(r, moved_),
+            labelList(UIndirectList<label>(hints_, moved_))
+        );
     }
-    centreCells_.setSize(n);
+    if (keepDistance_ > 0) keepRows(x0, r);
+    centreCells_ = hints_;
 
     stats_ = statistics();
+    stats_.nKept = n - moved_.size();
     particleVolumes_.setSize(n);
     forAll(particleVolumes_, p)
     {
@@ -262,5 +309,6 @@ void Foam::voidFractionModel::report(Ostream& os) const
         << ", volume outside " << s.particleVolume - s.meshedVolume << nl
         << "    void fraction min " << s.minVoidFraction
         << " max " << s.maxVoidFraction
-        << ", volume moved by alphaMin " << s.movedVolume << endl;
+        << ", volume moved by alphaMin " << s.movedVolume << nl
+        << "    particles that kept their weights " << s.nKept << endl;
 }

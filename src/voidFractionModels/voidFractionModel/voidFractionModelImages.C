@@ -70,11 +70,39 @@ void Foam::voidFractionModel::collectPeriodicShifts()
         if (mag(S) > tol) shifts.append(S);
     }
     periodicShifts_.transfer(shifts);
+    for (const vector& t : directions)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (mag(t[d]) > tol) periodicDirection_[d] = true;
+        }
+    }
     if (periodicShifts_.size())
     {
         Info<< "voidFractionModel: periodic translations " << directions
             << ": particles by a cyclic patch get periodic images" << endl;
     }
+}
+
+
+bool Foam::voidFractionModel::nearPeriodicSide
+(
+    const point& c,
+    const scalar reach
+) const
+{
+    // a particle clear of every periodic side of the box has no image that
+    // reaches it (the translations span the box)
+    const point& lo = globalBounds_.min();
+    const point& hi = globalBounds_.max();
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (periodicDirection_[d] && (c[d] - reach <= lo[d] || c[d] + reach >= hi[d]))
+        {
+            return true;
+        }
+    }
+    return false;
 }
 
 
@@ -112,13 +140,7 @@ void Foam::voidFractionModel::makeImages
     {
         const scalar reach = imageReach(r[p]);
         const point& c = x[p];
-        // a particle clear of every side of the box has no image that
-        // reaches it (the translations span the box)
-        const bool clear =
-            c.x() - reach > lo.x() && c.x() + reach < hi.x()
-         && c.y() - reach > lo.y() && c.y() + reach < hi.y()
-         && c.z() - reach > lo.z() && c.z() + reach < hi.z();
-        if (!clear)
+        if (nearPeriodicSide(c, reach))
         {
             for (const vector& S : periodicShifts_)
             {

@@ -39,7 +39,7 @@ Foam::voidFractionModels::kernel::kernel
     else
     {
         bandwidthOverCellSize_ =
-            positiveCoeff("bandwidthOverCellSize", seedDefault(0.4, 1.0));
+            positiveCoeff("bandwidthOverCellSize", 0.4);
     }
     collectWalls(mesh, coeffs_.lookupOrDefault<bool>("reflectAtWalls", true));
     cellSize_.setSize(mesh.nCells());

@@ -204,14 +204,22 @@ def disk_study():
     r_max = max(radii)
     phi = sum(math.pi * r * r for r in radii) / L ** 2
     log("%s: %d disks, area fraction %.3f" % (DISKS, len(radii), phi))
+    sweep_X(DISKS, dump, L, r_max, SWEEPS_2D, two_d=True)
+
+
+def sweep_X(name, dump, L, r_max, sweeps, two_d=False):
+    """Every model over its parameter at X = 2..6 as the seed; a sample is
+    only so many diameters wide, so cells per side are whole numbers and X
+    lands near the target."""
     done = set()
     for X in (2, 2.5, 3, 4, 5, 6):
         n = max(1, round(L / (X * 2 * r_max)))
         if n in done:
             continue
         done.add(n)
-        log("%s, X = %.2f (%d^2 cells): every model over its parameter" % (DISKS, L / n / (2 * r_max), n))
-        run_case("%s-X%g" % (DISKS, X), dump, L, X, r_max, sweep_runs(SWEEPS_2D), two_d=True)
+        log("%s, X = %.2f (%d^%d cells): every model over its parameter"
+            % (name, L / n / (2 * r_max), n, 2 if two_d else 3))
+        run_case("%s-X%g" % (name, X), dump, L, X, r_max, sweep_runs(sweeps), two_d=two_d)
 
 
 def default_runs():
@@ -364,16 +372,7 @@ def main():
         ds = sorted(2 * r for r in radii)
         log("%s: %d spheres, solid fraction %.3f, d60/d10 %.3f" %
             (name, len(radii), phi, ds[int(0.6 * len(ds))] / ds[int(0.1 * len(ds))]))
-        # X = 2..6 as the seed; a sample is only so many diameters wide, so
-        # cells per side are whole numbers and X lands near the target
-        done = set()
-        for X in (2, 2.5, 3, 4, 5, 6):
-            n = max(1, round(L / (X * 2 * r_max)))
-            if n in done:
-                continue
-            done.add(n)
-            log("%s, X = %.2f (%d^3 cells): every model over its parameter" % (name, L / n / (2 * r_max), n))
-            run_case("%s-X%g" % (name, X), dump, L, X, r_max, sweep_runs())
+        sweep_X(name, dump, L, r_max, SWEEPS)
     dump, L, r_max, count = packed["L1.2a"]
     log("X = 3 on 2 MPI ranks")
     run_case("L1.2a-X3-np2", dump, L, 3, r_max, default_runs(), nprocs=2)

@@ -293,23 +293,16 @@ Foam::particleData Foam::particleFluidCoupling::particlesOnMaster() const
     Pstream::gatherList(id);
     Pstream::gatherList(v);
     if (!Pstream::master()) return particleData();
-    const particleData all
+    particleData all
     (
         ListListOps::combine<pointField>(x, accessOp<pointField>()),
         ListListOps::combine<scalarField>(r, accessOp<scalarField>()),
         ListListOps::combine<labelList>(id, accessOp<labelList>())
     );
-    const vectorField allV(ListListOps::combine<vectorField>(v, accessOp<vectorField>()));
+    all.setVelocities(ListListOps::combine<vectorField>(v, accessOp<vectorField>()));
     labelList order;
     sortedOrder(all.ids(), order);
-    particleData sorted
-    (
-        pointField(all.positions(), order),
-        scalarField(all.radii(), order),
-        labelList(UIndirectList<label>(all.ids(), order))
-    );
-    sorted.setVelocities(vectorField(allV, order));
-    return sorted;
+    return all.reordered(order);
 }
 
 

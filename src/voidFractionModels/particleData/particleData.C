@@ -1,6 +1,7 @@
 #include "particleData.H"
 #include "mathematicalConstants.H"
 #include "error.H"
+#include "UIndirectList.H"
 
 #include <cerrno>
 #include <cmath>
@@ -40,6 +41,19 @@ void Foam::particleData::setVelocities(vectorField&& velocities)
             << " particles" << exit(FatalError);
     }
     velocities_ = std::move(velocities);
+}
+
+
+Foam::particleData Foam::particleData::reordered(const labelUList& order) const
+{
+    particleData result
+    (
+        pointField(positions_, order),
+        scalarField(radii_, order),
+        labelList(UIndirectList<label>(ids_, order))
+    );
+    if (velocities_.size()) result.setVelocities(vectorField(velocities_, order));
+    return result;
 }
 
 

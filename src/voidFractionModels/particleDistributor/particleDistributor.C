@@ -57,17 +57,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
     if (!Pstream::parRun())
     {
         // one rank holds all: only the id order to make
-        const labelList& order = idOrder(owned.ids());
-        held = particleData
-        (
-            pointField(owned.positions(), order),
-            scalarField(owned.radii(), order),
-            labelList(UIndirectList<label>(owned.ids(), order))
-        );
-        if (owned.velocities().size())
-        {
-            held.setVelocities(vectorField(owned.velocities(), order));
-        }
+        held = owned.reordered(idOrder(owned.ids()));
         return particleHolders();
     }
 

@@ -52,8 +52,7 @@ Foam::particleHolders::particleHolders
         UOPstream os(rank, buffers);
         os << flags[rank];
     }
-    labelList recvSizes;
-    buffers.finishedSends(recvSizes);
+    buffers.finishedSends();
     const labelListList& lands = map_.constructMap();
     forAll(lands, rank)
     {

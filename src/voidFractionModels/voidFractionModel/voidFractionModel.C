@@ -117,7 +117,8 @@ void Foam::voidFractionModel::carryHints(const labelList& ids)
 {
     if (ids == hintIds_)
     {
-        previous_ = identity(ids.size());
+        // previous_ (for keepDistance) is then the identity
+        if (keepDistance_ > 0) previous_ = identity(ids.size());
         return;
     }
     labelList hints(ids.size(), -1);

@@ -18,31 +18,6 @@ namespace
         return Foam::scalarList(u);
     }
 
-    Foam::label searchInterval(const Foam::scalarList& g, double x)
-    {
-        if (x < g.first() || x > g.last()) return -1;
-        const auto it = std::upper_bound(g.begin(), g.end(), x);
-        const Foam::label i = Foam::label(it - g.begin()) - 1;
-        return std::min(i, g.size() - 2);
-    }
-}
-
-
-Foam::label Foam::particleCellLocator::interval
-(
-    const direction d,
-    const scalar x
-) const
-{
-    const scalarList& g = grid_[d];
-    if (invSpacing_[d] == 0) return searchInterval(g, x);
-    if (x < g.first() || x > g.last()) return -1;
-    const label n = g.size() - 1;
-    label i = min(max(label((x - g.first())*invSpacing_[d]), 0), n - 1);
-    // the same interval the planes themselves give, whatever the rounding
-    while (i > 0 && x < g[i]) --i;
-    while (i < n - 1 && x >= g[i + 1]) ++i;
-    return i;
 }
 
 
@@ -64,7 +39,7 @@ bool Foam::particleCellLocator::detectTensorGrid()
     if (ok)
     {
         ijkCell_.setSize(nx*ny*nz, -1);
-        cellIjk_.setSize(nx*ny*nz, -1);
+        cellIjk_.setSize(3*nx*ny*nz, -1);
         forAll(cells, celli)
         {
             if (cells[celli].size() != 6) { ok = false; break; }
@@ -88,7 +63,9 @@ bool Foam::particleCellLocator::detectTensorGrid()
                 ok = false; break;
             }
             ijkCell_[i + nx*(j + ny*k)] = celli;
-            cellIjk_[celli] = i + nx*(j + ny*k);
+            cellIjk_[3*celli] = i;
+            cellIjk_[3*celli + 1] = j;
+            cellIjk_[3*celli + 2] = k;
         }
     }
     if (!ok)
@@ -170,6 +147,19 @@ Foam::label Foam::particleCellLocator::walk(const point& p, label celli) const
 }
 
 
+Foam::label Foam::particleCellLocator::searchInterval
+(
+    const scalarList& g,
+    const scalar x
+)
+{
+    if (x < g.first() || x > g.last()) return -1;
+    const auto it = std::upper_bound(g.begin(), g.end(), x);
+    const label i = label(it - g.begin()) - 1;
+    return min(i, g.size() - 2);
+}
+
+
 Foam::label Foam::particleCellLocator::findCell
 (
     const point& p,
@@ -238,21 +228,15 @@ bool Foam::particleCellLocator::planeCuts
             offset[d] = cut[d] ? (fromBelow ? g[0] - c[d] : g[n] - c[d]) : 0;
             continue;
         }
-        const bool below = (c[d] - g[i] < R), above = (g[i + 1] - c[d] < R);
+        // which side a sphere is cut on is random: selects, not branches
+        const scalar toLow = g[i] - c[d], toHigh = g[i + 1] - c[d];
+        const bool below = (-toLow < R), above = (toHigh < R);
         if (below && above) return false;
         cut[d] = below || above;
-        low[d] = high[d] = i;
-        if (below)
-        {
-            offset[d] = g[i] - c[d];
-            low[d] = i - 1;
-        }
-        else if (above)
-        {
-            offset[d] = g[i + 1] - c[d];
-            high[d] = i + 1;
-        }
-        if (high[d] == n) high[d] = -1;
+        offset[d] = below ? toLow : (above ? toHigh : 0);
+        low[d] = i - label(below);
+        const label up = i + label(above);
+        high[d] = (up == n) ? -1 : up;
     }
     return true;
 }

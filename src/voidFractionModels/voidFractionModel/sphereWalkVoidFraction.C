@@ -28,21 +28,32 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     scalar offset[3];
     label low[3], high[3];
     if (!locator_.planeCuts(centreCell, c, R, cut, offset, low, high)) return false;
+    const int cutMask = int(cut[0]) | int(cut[1]) << 1 | int(cut[2]) << 2;
+    if (cutMask == 0)
+    {
+        // whole in one cell: no volume to compute
+        if (low[0] >= 0 && low[1] >= 0 && low[2] >= 0)
+        {
+            weights_.append(locator_.gridCell(low[0], low[1], low[2]), 1.0);
+        }
+        return true;
+    }
     if (cut[0] + cut[1] + cut[2] > maxCuts) return false;
 
     scalar piece[8];
     sphereOverlap::planeSplit(R, offset, cut, piece);
-    const scalar Vp = particleVolume(R);
-    for (int s = 0; s < 8; ++s)
+    const scalar perVolume = 1/particleVolume(R);
+    // the pieces are the sides of the cut axes only
+    for (int s = cutMask; ; s = (s - 1) & cutMask)
     {
-        if (piece[s] <= 0) continue;
         const label i = (s & 1) ? high[0] : low[0];
         const label j = (s & 2) ? high[1] : low[1];
         const label k = (s & 4) ? high[2] : low[2];
-        if (i >= 0 && j >= 0 && k >= 0)
+        if (piece[s] > 0 && i >= 0 && j >= 0 && k >= 0)
         {
-            weights_.append(locator_.gridCell(i, j, k), piece[s]/Vp);
+            weights_.append(locator_.gridCell(i, j, k), piece[s]*perVolume);
         }
+        if (s == 0) break;
     }
     return true;
 }

@@ -94,12 +94,11 @@ void Foam::voidFractionModel::collectStatistics(const particleData& particles)
     }
     holders_.combine(fractionSum, plusEqOp<scalar>());
     holders_.combine(found, plusEqOp<label>());
-    const scalarField& r = particles.radii();
     for (label p = 0; p < n; ++p)
     {
         if (!holders_.counted(p)) continue;
         ++stats_.nParticles;
-        const scalar Vp = particleVolume(r[p]);
+        const scalar Vp = particleVolumes_[p];
         stats_.particleVolume += Vp;
         stats_.meshedVolume += fractionSum[p]*Vp;
         if (!found[p]) ++stats_.nOutside;

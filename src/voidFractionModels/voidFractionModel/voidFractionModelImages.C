@@ -114,17 +114,10 @@ void Foam::voidFractionModel::makeImages
 {
     const label n = x.size();
     nParticles_ = n;
-    entries_.clear();
-    entryRadii_.clear();
+    entries_ = x;
+    entryRadii_ = r;
     parent_.clear();
     shift_.clear();
-    forAll(x, p)
-    {
-        entries_.append(x[p]);
-        entryRadii_.append(r[p]);
-        parent_.append(p);
-        shift_.append(Zero);
-    }
     imageOffsets_.setSize(n + 1);
     imageOffsets_[0] = 0;
     const point& lo = globalBounds_.min();

@@ -322,11 +322,7 @@ void Foam::particleFluidCoupling::beginStep
 
         // drag coefficients from the fluid state at each particle
         const label n = particles_.size();
-        volumes_.setSize(n);
-        forAll(volumes_, i)
-        {
-            volumes_[i] = voidFraction_->particleVolume(particles_.radii()[i]);
-        }
+        const scalarField& volumes = voidFraction_->particleVolumes();
         scalarField alphaP;
         voidFraction_->gather(voidFraction_->voidFraction().primitiveField(), alphaP);
         voidFraction_->weightSums(weightSum_);
@@ -346,7 +342,7 @@ void Foam::particleFluidCoupling::beginStep
             const scalar a = alphaP[i]/s;
             beta_[i] = drag_->beta
             (
-                {2*particles_.radii()[i], volumes_[i], a, mag(Up[i]/s - v[i]), rho_, mu}
+                {2*particles_.radii()[i], volumes[i], a, mag(Up[i]/s - v[i]), rho_, mu}
             );
             if (formulation_ == formulation::B) beta_[i] /= a;
         }
@@ -384,7 +380,29 @@ void Foam::particleFluidCoupling::endStep
     vectorField Up;
     voidFraction_->gather(U.primitiveField(), Up);
     const vectorField& v = particles_.velocities();
-    vectorField drag(beta_*(Up - weightSum_*v));
+    const scalarField& volumes = voidFraction_->particleVolumes();
+    const particleHolders& holders = voidFraction_->holders();
+    vectorField gradP;
+    if (pressureGradientForce_)
+    {
+        voidFraction_->gather(fvc::grad(p)().primitiveField(), gradP);
+    }
+
+    // one pass: drag with the same weights as the fluid's, the others
+    vectorField& F = forceSum_;
+    vector particleGain(Zero);
+    forAll(F, i)
+    {
+        const vector drag = beta_[i]*(Up[i] - weightSum_[i]*v[i]);
+        if (holders.counted(i)) particleGain += drag;
+        F[i] += drag;
+        if (pressureGradientForce_ && weightSum_[i] > SMALL)
+        {
+            F[i] -= rho_*volumes[i]*gradP[i]/weightSum_[i];
+        }
+        if (buoyancy_) F[i] -= rho_*volumes[i]*g_;
+    }
+    reduce(particleGain, sumOp<vector>());
 
     // what the fluid lost to the particles in this step's equations
     const vector fluidLoss = rho_*gSum
@@ -392,29 +410,9 @@ void Foam::particleFluidCoupling::endStep
         mesh_.V().field()*(Ksl_.primitiveField()*U.primitiveField()
       - dragSource_.primitiveField())
     );
-    const vector particleGain = sumOverParticles(drag);
     const scalar error =
         mag(fluidLoss - particleGain)/max(mag(particleGain), VSMALL);
     worstMomentumError_ = max(worstMomentumError_, error);
-
-    vectorField& F = forceSum_;
-    F += drag;
-    if (pressureGradientForce_)
-    {
-        vectorField gradP;
-        voidFraction_->gather(fvc::grad(p)().primitiveField(), gradP);
-        forAll(F, i)
-        {
-            if (weightSum_[i] > SMALL)
-            {
-                F[i] -= rho_*volumes_[i]*gradP[i]/weightSum_[i];
-            }
-        }
-    }
-    if (buoyancy_)
-    {
-        F -= rho_*volumes_*g_;
-    }
     timeForces_ += clock_.timeIncrement();
 
     if (fluidStep_ == fluidStepsPerCoupling_)

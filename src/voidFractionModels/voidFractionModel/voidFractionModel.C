@@ -163,15 +163,24 @@ void Foam::voidFractionModel::computeRows
 
     // images lie outside the mesh unless a particle is outside it
     centreCells_.setSize(x.size());
-    forAll(x, i)
-    {
-        centreCells_[i] = (i < n) ? centres[i]
-          : globalBounds_.contains(x[i]) ? locator_.findCell(x[i]) : -1;
-    }
     computedImages_.setSize(n);
-    forAll(computedImages_, p)
+    if (periodic)
     {
-        computedImages_[p] = periodic && imageOffsets_[p + 1] > imageOffsets_[p];
+        forAll(x, i)
+        {
+            const label p = parent_[i];
+            centreCells_[i] = (i == firstEntry_[p]) ? centres[p]
+              : globalBounds_.contains(x[i]) ? locator_.findCell(x[i]) : -1;
+        }
+        forAll(computedImages_, p)
+        {
+            computedImages_[p] = firstEntry_[p + 1] - firstEntry_[p] > 1;
+        }
+    }
+    else
+    {
+        centreCells_ = centres;
+        computedImages_ = false;
     }
 
     weights_.clear();
@@ -182,12 +191,7 @@ void Foam::voidFractionModel::computeRows
             << type() << " produced weights for " << weights_.nParticles()
             << " of " << x.size() << " particles and images" << abort(FatalError);
     }
-    if (x.size() > n)
-    {
-        // most images reach no cell of this processor: nothing to merge
-        if (weights_.begin(n) == weights_.size()) weights_.truncate(n);
-        else mergeImageRows();
-    }
+    if (x.size() > n) weights_.joinRows(firstEntry_);
 }
 
 

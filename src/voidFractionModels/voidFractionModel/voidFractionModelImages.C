@@ -114,12 +114,11 @@ void Foam::voidFractionModel::makeImages
 {
     const label n = x.size();
     nParticles_ = n;
-    entries_ = x;
-    entryRadii_ = r;
+    entries_.clear();
+    entryRadii_.clear();
     parent_.clear();
     shift_.clear();
-    imageOffsets_.setSize(n + 1);
-    imageOffsets_[0] = 0;
+    firstEntry_.setSize(n + 1);
     const point& lo = globalBounds_.min();
     const point& hi = globalBounds_.max();
     auto overlaps = [&](const point& c, const scalar reach)
@@ -128,40 +127,23 @@ void Foam::voidFractionModel::makeImages
             && c.y() - reach < hi.y() && c.y() + reach > lo.y()
             && c.z() - reach < hi.z() && c.z() + reach > lo.z();
     };
-    label nImages = 0;
+    auto add = [&](const point& c, const label p, const vector& S)
+    {
+        entries_.append(c);
+        entryRadii_.append(r[p]);
+        parent_.append(p);
+        shift_.append(S);
+    };
     forAll(x, p)
     {
+        firstEntry_[p] = entries_.size();
+        add(x[p], p, Zero);
         const scalar reach = imageReach(r[p]);
-        const point& c = x[p];
-        if (nearPeriodicSide(c, reach))
+        if (!nearPeriodicSide(x[p], reach)) continue;
+        for (const vector& S : periodicShifts_)
         {
-            for (const vector& S : periodicShifts_)
-            {
-                if (!overlaps(c + S, reach)) continue;
-                entries_.append(c + S);
-                entryRadii_.append(r[p]);
-                parent_.append(p);
-                shift_.append(S);
-                ++nImages;
-            }
+            if (overlaps(x[p] + S, reach)) add(x[p] + S, p, S);
         }
-        imageOffsets_[p + 1] = nImages;
     }
-}
-
-
-void Foam::voidFractionModel::mergeImageRows()
-{
-    const label n = nParticles_;
-    merged_.clear();
-    for (label p = 0; p < n; ++p)
-    {
-        merged_.appendRow(weights_, p);
-        for (label k = imageOffsets_[p]; k < imageOffsets_[p + 1]; ++k)
-        {
-            merged_.appendRow(weights_, n + k);
-        }
-        merged_.endParticle();
-    }
-    weights_.swap(merged_);
+    firstEntry_[n] = entries_.size();
 }

@@ -324,10 +324,13 @@ void Foam::particleFluidCoupling::beginStep
         const label n = particles_.size();
         const scalarField& volumes = voidFraction_->particleVolumes();
         scalarField alphaP;
-        voidFraction_->gather(voidFraction_->voidFraction().primitiveField(), alphaP);
-        voidFraction_->weightSums(weightSum_);
         vectorField Up;
-        voidFraction_->gather(U.primitiveField(), Up);
+        voidFraction_->gather
+        (
+            voidFraction_->voidFraction().primitiveField(), alphaP,
+            U.primitiveField(), Up
+        );
+        voidFraction_->weightSums(weightSum_);
         const vectorField& v = particles_.velocities();
         const scalar mu = rho_*nu;
         beta_.setSize(n);
@@ -377,16 +380,18 @@ void Foam::particleFluidCoupling::endStep
 {
     timeFluid_ += clock_.timeIncrement();
 
-    vectorField Up;
-    voidFraction_->gather(U.primitiveField(), Up);
+    vectorField Up, gradP;
+    if (pressureGradientForce_)
+    {
+        voidFraction_->gather(U.primitiveField(), Up, fvc::grad(p)().primitiveField(), gradP);
+    }
+    else
+    {
+        voidFraction_->gather(U.primitiveField(), Up);
+    }
     const vectorField& v = particles_.velocities();
     const scalarField& volumes = voidFraction_->particleVolumes();
     const particleHolders& holders = voidFraction_->holders();
-    vectorField gradP;
-    if (pressureGradientForce_)
-    {
-        voidFraction_->gather(fvc::grad(p)().primitiveField(), gradP);
-    }
 
     // one pass: drag with the same weights as the fluid's, the others
     vectorField& F = forceSum_;

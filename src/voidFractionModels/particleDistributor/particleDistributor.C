@@ -89,35 +89,58 @@ Foam::particleHolders Foam::particleDistributor::distribute
         if (!sent) sends[Pstream::masterNo()].append(p);
     }
 
-    // the ids tell each rank what it receives and in which order it keeps it
+    // one message per rank with everything: the ids tell the receiver in
+    // which order it keeps the particles
+    const vectorField& v = owned.velocities();
+    const bool withU = (v.size() == owned.size() && owned.size());
     labelListList subMap(nProcs);
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    List<labelList> receivedIds(nProcs);
+    List<pointField> receivedX(nProcs);
+    List<scalarField> receivedR(nProcs);
+    List<vectorField> receivedU(nProcs);
     forAll(sends, rank)
     {
         subMap[rank].transfer(sends[rank]);
-        if (rank != Pstream::myProcNo() && subMap[rank].size())
+        const labelList& send = subMap[rank];
+        if (send.empty()) continue;
+        labelList ids(UIndirectList<label>(owned.ids(), send));
+        pointField sx(x, send);
+        scalarField sr(r, send);
+        vectorField su(withU ? vectorField(v, send) : vectorField());
+        if (rank == Pstream::myProcNo())
+        {
+            receivedIds[rank].transfer(ids);
+            receivedX[rank].transfer(sx);
+            receivedR[rank].transfer(sr);
+            receivedU[rank].transfer(su);
+        }
+        else
         {
             UOPstream os(rank, buffers);
-            os << labelList(UIndirectList<label>(owned.ids(), subMap[rank]));
+            os << ids << sx << sr << su;
         }
     }
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
-    labelListList receivedIds(nProcs);
-    label nHeld = 0;
+    label nHeld = 0, nWithU = 0;
     forAll(receivedIds, rank)
     {
-        if (rank == Pstream::myProcNo())
-        {
-            receivedIds[rank] = labelList(UIndirectList<label>(owned.ids(), subMap[rank]));
-        }
-        else if (recvSizes[rank])
+        if (rank != Pstream::myProcNo() && recvSizes[rank])
         {
             UIPstream is(rank, buffers);
-            is >> receivedIds[rank];
+            is >> receivedIds[rank] >> receivedX[rank] >> receivedR[rank] >> receivedU[rank];
         }
         nHeld += receivedIds[rank].size();
+        nWithU += receivedU[rank].size();
     }
+    if (nWithU && nWithU != nHeld)
+    {
+        FatalErrorInFunction
+            << "some ranks' particles have velocities and others' not"
+            << abort(FatalError);
+    }
+
     labelList allIds(nHeld);
     label k = 0;
     for (const labelList& ids : receivedIds)
@@ -126,27 +149,28 @@ Foam::particleHolders Foam::particleDistributor::distribute
     }
     const labelList slot(invert(nHeld, idOrder(allIds)));
     labelListList constructMap(nProcs);
+    pointField heldX(nHeld);
+    scalarField heldR(nHeld);
+    labelList heldIds(nHeld);
+    vectorField heldU(nWithU);
     k = 0;
     forAll(receivedIds, rank)
     {
-        constructMap[rank].setSize(receivedIds[rank].size());
-        for (label& to : constructMap[rank]) to = slot[k++];
+        labelList& construct = constructMap[rank];
+        construct.setSize(receivedIds[rank].size());
+        forAll(construct, i)
+        {
+            const label to = slot[k++];
+            construct[i] = to;
+            heldX[to] = receivedX[rank][i];
+            heldR[to] = receivedR[rank][i];
+            heldIds[to] = receivedIds[rank][i];
+            if (nWithU) heldU[to] = receivedU[rank][i];
+        }
     }
 
     particleHolders holders(owned.size(), std::move(subMap), std::move(constructMap), nHeld);
-    pointField heldX(x);
-    scalarField heldR(r);
-    labelList heldIds(owned.ids());
-    holders.toHeld(heldX);
-    holders.toHeld(heldR);
-    holders.toHeld(heldIds);
     held = particleData(std::move(heldX), std::move(heldR), std::move(heldIds));
-    // a rank may own no particle: all take the same branch
-    if (returnReduce(owned.velocities().size() > 0, orOp<bool>()))
-    {
-        vectorField heldU(owned.velocities());
-        holders.toHeld(heldU);
-        held.setVelocities(std::move(heldU));
-    }
+    if (nWithU) held.setVelocities(std::move(heldU));
     return holders;
 }

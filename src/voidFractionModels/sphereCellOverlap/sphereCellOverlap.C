@@ -32,10 +32,10 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
     faceMax_(mesh.nFaces()),
     faceNormal_(mesh.nFaces()),
     planarFace_(mesh.nFaces(), true),
-    queuedAt_(mesh.nCells(), 0),
-    walkCount_(0),
     emptyDir_(-1),
-    thickness_(0)
+    thickness_(0),
+    queuedAt_(mesh.nCells(), 0),
+    walkCount_(0)
 {
     const pointField& pts = mesh.points();
     const faceList& faces = mesh.faces();

@@ -1,4 +1,5 @@
 #include "voidFractionModel.H"
+#include "vector2D.H"
 #include "mathematicalConstants.H"
 #include "zeroGradientFvPatchFields.H"
 #include "UIndirectList.H"
@@ -25,8 +26,8 @@ Foam::voidFractionModel::voidFractionModel
     emptyDir_(0),
     slabMid_(0),
     thickness_(0),
-    globalBounds_(mesh.bounds()),
     keepDistance_(dict.lookupOrDefault<scalar>("keepDistance", 0)),
+    globalBounds_(mesh.bounds()),
     nParticles_(0),
     solid_(mesh.nCells(), 0),
     voidFraction_
@@ -79,7 +80,7 @@ Foam::voidFractionModel::voidFractionModel
 }
 
 
-void Foam::voidFractionModel::collectStatistics(const particleData& particles)
+Foam::label Foam::voidFractionModel::collectStatistics(const particleData& particles)
 {
     // per-particle sums over the holders; each particle is added once
     const label n = particles.size();
@@ -87,28 +88,42 @@ void Foam::voidFractionModel::collectStatistics(const particleData& particles)
     labelList& found = found_;
     fractionSum.setSize(n);
     found.setSize(n);
-    forAll(fractionSum, p)
+    // (weight sum, holders of the centre) combined in one exchange
+    List<vector2D> combined(n);
+    forAll(combined, p)
     {
-        fractionSum[p] = weights_.sum(p);
-        found[p] = (centreCells_[p] >= 0);
+        combined[p] = vector2D(weights_.sum(p), centreCells_[p] >= 0);
     }
-    holders_.combine(fractionSum, plusEqOp<scalar>());
-    holders_.combine(found, plusEqOp<label>());
+    holders_.combine(combined, plusEqOp<vector2D>());
+    forAll(combined, p)
+    {
+        fractionSum[p] = combined[p].x();
+        found[p] = label(combined[p].y());
+    }
+
+    // counts travel as scalars: exact far beyond any particle count
+    enum { kNParticles, kNOutside, kNCut, kParticleVolume, kMeshedVolume, kSolid, kNOver, kNSums };
+    scalarField sums(kNSums, Zero);
     for (label p = 0; p < n; ++p)
     {
         if (!holders_.counted(p)) continue;
-        ++stats_.nParticles;
+        sums[kNParticles] += 1;
         const scalar Vp = particleVolumes_[p];
-        stats_.particleVolume += Vp;
-        stats_.meshedVolume += fractionSum[p]*Vp;
-        if (!found[p]) ++stats_.nOutside;
-        else if (fractionSum[p] < 1 - 1e-9) ++stats_.nCut;
+        sums[kParticleVolume] += Vp;
+        sums[kMeshedVolume] += fractionSum[p]*Vp;
+        if (!found[p]) sums[kNOutside] += 1;
+        else if (fractionSum[p] < 1 - 1e-9) sums[kNCut] += 1;
     }
-    reduce(stats_.nParticles, sumOp<label>());
-    reduce(stats_.nOutside, sumOp<label>());
-    reduce(stats_.nCut, sumOp<label>());
-    reduce(stats_.particleVolume, sumOp<scalar>());
-    reduce(stats_.meshedVolume, sumOp<scalar>());
+    sums[kSolid] = sum(solid_);
+    sums[kNOver] = cellsOverLimit();
+    reduce(sums, sumOp<scalarField>());
+    stats_.nParticles = label(sums[kNParticles]);
+    stats_.nOutside = label(sums[kNOutside]);
+    stats_.nCut = label(sums[kNCut]);
+    stats_.particleVolume = sums[kParticleVolume];
+    stats_.meshedVolume = sums[kMeshedVolume];
+    stats_.solidVolume = sums[kSolid];
+    return label(sums[kNOver]);
 }
 
 
@@ -241,9 +256,8 @@ void Foam::voidFractionModel::update
         particleVolumes_[p] = particleVolume(particles.radii()[p]);
     }
     spread(particleVolumes_, solid_);
-    collectStatistics(particles);
-
-    stats_.movedVolume = limitSolidFraction();
+    const label nOver = collectStatistics(particles);
+    stats_.movedVolume = limitSolidFraction(nOver);
 
     const scalarField& V = mesh_.V();
     scalarField& alpha = voidFraction_.primitiveFieldRef();
@@ -254,9 +268,12 @@ void Foam::voidFractionModel::update
         alpha[celli] = min(1 - solid_[celli]/V[celli], scalar(1));
     }
     voidFraction_.correctBoundaryConditions();
-    stats_.solidVolume = gSum(solid_);
-    stats_.minVoidFraction = gMin(alpha);
-    stats_.maxVoidFraction = gMax(alpha);
+    // the limiter moves volume; the total it keeps is what is reported
+    if (nOver) stats_.solidVolume = gSum(solid_);
+    vector2D range(min(alpha), -max(alpha));
+    reduce(range, minOp<vector2D>());
+    stats_.minVoidFraction = range.x();
+    stats_.maxVoidFraction = -range.y();
 }
 
 

@@ -3,26 +3,33 @@
 #include "syncTools.H"
 
 
-Foam::scalar Foam::voidFractionModel::limitSolidFraction()
+Foam::label Foam::voidFractionModel::cellsOverLimit() const
 {
     const scalarField& V = mesh_.V();
     const scalar maxSolid = 1 - alphaMin_;
-
-    if (gSum(solid_) > maxSolid*gSum(V))
-    {
-        FatalErrorInFunction
-            << "the particles hold " << gSum(solid_) << " m3, more than (1 - alphaMin)"
-            << " of the mesh volume " << gSum(V) << " (alphaMin " << alphaMin_
-            << "): no void fraction >= alphaMin exists" << exit(FatalError);
-    }
-
-    // the usual step: nothing to move, nothing to allocate
     label nOver = 0;
     forAll(solid_, celli)
     {
         nOver += (solid_[celli] > maxSolid*V[celli]*(1 + 1e-12));
     }
-    if (returnReduce(nOver, sumOp<label>()) == 0) return 0;
+    return nOver;
+}
+
+
+Foam::scalar Foam::voidFractionModel::limitSolidFraction(const label nOverAll)
+{
+    // the usual step: nothing to move, nothing to allocate
+    if (nOverAll == 0) return 0;
+
+    const scalarField& V = mesh_.V();
+    const scalar maxSolid = 1 - alphaMin_;
+    if (stats_.solidVolume > maxSolid*gSum(V))
+    {
+        FatalErrorInFunction
+            << "the particles hold " << stats_.solidVolume << " m3, more than (1 - alphaMin)"
+            << " of the mesh volume " << gSum(V) << " (alphaMin " << alphaMin_
+            << "): no void fraction >= alphaMin exists" << exit(FatalError);
+    }
 
     // Faces across which volume moves: internal faces and processor faces
     // (so a decomposed case moves it exactly as the whole one does)
@@ -49,7 +56,7 @@ Foam::scalar Foam::voidFractionModel::limitSolidFraction()
     scalar moved = 0;
     for (label sweep = 0; sweep < 100000; ++sweep)
     {
-        nOver = 0;
+        label nOver = 0;
         forAll(solid_, celli)
         {
             room[celli] = max(maxSolid*V[celli] - solid_[celli], 0.0);

@@ -33,7 +33,7 @@ void Foam::voidFractionModel::spread
 
 
 template<class Type>
-void Foam::voidFractionModel::gather
+void Foam::voidFractionModel::gatherHere
 (
     const Field<Type>& perCell,
     Field<Type>& perParticle
@@ -62,5 +62,60 @@ void Foam::voidFractionModel::gather
         }
         perParticle[p] = sum;
     }
+}
+
+
+template<class Type>
+void Foam::voidFractionModel::gather
+(
+    const Field<Type>& perCell,
+    Field<Type>& perParticle
+)
+{
+    gatherHere(perCell, perParticle);
     holders_.combine(perParticle, plusEqOp<Type>());
+}
+
+
+template<class TypeA, class TypeB>
+void Foam::voidFractionModel::gather
+(
+    const Field<TypeA>& perCellA,
+    Field<TypeA>& perParticleA,
+    const Field<TypeB>& perCellB,
+    Field<TypeB>& perParticleB
+)
+{
+    const direction nA = pTraits<TypeA>::nComponents;
+    const direction nB = pTraits<TypeB>::nComponents;
+    static_assert(nA + nB <= 6, "two gathers of at most six components");
+    gatherHere(perCellA, perParticleA);
+    gatherHere(perCellB, perParticleB);
+    if (!Pstream::parRun()) return;
+
+    // a symmTensor only carries the six sums through the exchange
+    List<symmTensor> both(perParticleA.size(), Zero);
+    forAll(both, p)
+    {
+        for (direction d = 0; d < nA; ++d)
+        {
+            both[p][d] = component(perParticleA[p], d);
+        }
+        for (direction d = 0; d < nB; ++d)
+        {
+            both[p][nA + d] = component(perParticleB[p], d);
+        }
+    }
+    holders_.combine(both, plusEqOp<symmTensor>());
+    forAll(both, p)
+    {
+        for (direction d = 0; d < nA; ++d)
+        {
+            setComponent(perParticleA[p], d) = both[p][d];
+        }
+        for (direction d = 0; d < nB; ++d)
+        {
+            setComponent(perParticleB[p], d) = both[p][nA + d];
+        }
+    }
 }

@@ -38,21 +38,35 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
         }
         return true;
     }
-    if (cut[0] + cut[1] + cut[2] > maxCuts) return false;
+    const label nCut = cut[0] + cut[1] + cut[2];
+    if (nCut > maxCuts) return false;
+    const scalar Vp = particleVolume(R), perVolume = 1/Vp;
+    auto add = [&](const label i, const label j, const label k, const scalar volume)
+    {
+        if (volume > 0 && i >= 0 && j >= 0 && k >= 0)
+        {
+            weights_.append(locator_.gridCell(i, j, k), volume*perVolume);
+        }
+    };
+    if (nCut == 1)
+    {
+        // the most common cut: one cap beyond one plane
+        const direction d = cut[0] ? 0 : cut[1] ? 1 : 2;
+        const scalar cap = sphereOverlap::capVolume(R, mag(offset[d]));
+        label near[3] = {low[0], low[1], low[2]};
+        label far[3] = {low[0], low[1], low[2]};
+        (offset[d] > 0 ? far : near)[d] = high[d];
+        add(near[0], near[1], near[2], Vp - cap);
+        add(far[0], far[1], far[2], cap);
+        return true;
+    }
 
     scalar piece[8];
     sphereOverlap::planeSplit(R, offset, cut, piece);
-    const scalar perVolume = 1/particleVolume(R);
     // the pieces are the sides of the cut axes only
     for (int s = cutMask; ; s = (s - 1) & cutMask)
     {
-        const label i = (s & 1) ? high[0] : low[0];
-        const label j = (s & 2) ? high[1] : low[1];
-        const label k = (s & 4) ? high[2] : low[2];
-        if (piece[s] > 0 && i >= 0 && j >= 0 && k >= 0)
-        {
-            weights_.append(locator_.gridCell(i, j, k), piece[s]*perVolume);
-        }
+        add((s & 1) ? high[0] : low[0], (s & 2) ? high[1] : low[1], (s & 4) ? high[2] : low[2], piece[s]);
         if (s == 0) break;
     }
     return true;

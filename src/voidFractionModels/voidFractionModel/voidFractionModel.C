@@ -88,17 +88,22 @@ Foam::label Foam::voidFractionModel::collectStatistics(const particleData& parti
     labelList& found = found_;
     fractionSum.setSize(n);
     found.setSize(n);
-    // (weight sum, holders of the centre) combined in one exchange
-    List<vector2D> combined(n);
-    forAll(combined, p)
+    forAll(fractionSum, p)
     {
-        combined[p] = vector2D(weights_.sum(p), centreCells_[p] >= 0);
+        fractionSum[p] = weights_.sum(p);
+        found[p] = (centreCells_[p] >= 0);
     }
-    holders_.combine(combined, plusEqOp<vector2D>());
-    forAll(combined, p)
+    if (Pstream::parRun())
     {
-        fractionSum[p] = combined[p].x();
-        found[p] = label(combined[p].y());
+        // (weight sum, holders of the centre) combined in one exchange
+        List<vector2D> combined(n);
+        forAll(combined, p) combined[p] = vector2D(fractionSum[p], found[p]);
+        holders_.combine(combined, plusEqOp<vector2D>());
+        forAll(combined, p)
+        {
+            fractionSum[p] = combined[p].x();
+            found[p] = label(combined[p].y());
+        }
     }
 
     // counts travel as scalars: exact far beyond any particle count

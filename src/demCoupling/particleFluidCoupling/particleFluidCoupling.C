@@ -391,23 +391,21 @@ void Foam::particleFluidCoupling::endStep
     }
     const vectorField& v = particles_.velocities();
     const scalarField& volumes = voidFraction_->particleVolumes();
-    const particleHolders& holders = voidFraction_->holders();
 
     // one pass: drag with the same weights as the fluid's, the others
     vectorField& F = forceSum_;
-    vector particleGain(Zero);
+    stepDrag_.setSize(F.size());
     forAll(F, i)
     {
-        const vector drag = beta_[i]*(Up[i] - weightSum_[i]*v[i]);
-        if (holders.counted(i)) particleGain += drag;
-        F[i] += drag;
+        stepDrag_[i] = beta_[i]*(Up[i] - weightSum_[i]*v[i]);
+        F[i] += stepDrag_[i];
         if (pressureGradientForce_ && weightSum_[i] > SMALL)
         {
             F[i] -= rho_*volumes[i]*gradP[i]/weightSum_[i];
         }
         if (buoyancy_) F[i] -= rho_*volumes[i]*g_;
     }
-    reduce(particleGain, sumOp<vector>());
+    const vector particleGain = sumOverParticles(stepDrag_);
 
     // what the fluid lost to the particles in this step's equations
     const vector fluidLoss = rho_*gSum

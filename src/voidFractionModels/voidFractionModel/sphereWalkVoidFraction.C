@@ -40,7 +40,7 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     }
     const label nCut = cut[0] + cut[1] + cut[2];
     if (nCut > maxCuts) return false;
-    const scalar Vp = particleVolume(R), perVolume = 1/Vp;
+    const scalar perVolume = 1/particleVolume(R);
     auto add = [&](const label i, const label j, const label k, const scalar volume)
     {
         if (volume > 0 && i >= 0 && j >= 0 && k >= 0)
@@ -48,19 +48,6 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
             weights_.append(locator_.gridCell(i, j, k), volume*perVolume);
         }
     };
-    if (nCut == 1)
-    {
-        // the most common cut: one cap beyond one plane
-        const direction d = cut[0] ? 0 : cut[1] ? 1 : 2;
-        const scalar cap = sphereOverlap::capVolume(R, mag(offset[d]));
-        label near[3] = {low[0], low[1], low[2]};
-        label far[3] = {low[0], low[1], low[2]};
-        (offset[d] > 0 ? far : near)[d] = high[d];
-        add(near[0], near[1], near[2], Vp - cap);
-        add(far[0], far[1], far[2], cap);
-        return true;
-    }
-
     scalar piece[8];
     sphereOverlap::planeSplit(R, offset, cut, piece);
     // the pieces are the sides of the cut axes only

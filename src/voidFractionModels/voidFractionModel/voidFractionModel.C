@@ -85,7 +85,7 @@ Foam::label Foam::voidFractionModel::collectStatistics(const particleData& parti
     // per-particle sums over the holders; each particle is added once
     const label n = particles.size();
     scalarField& fractionSum = fractionSum_;
-    labelList& found = found_;
+    scalarField& found = centreHolders_;
     fractionSum.setSize(n);
     found.setSize(n);
     forAll(fractionSum, p)
@@ -93,18 +93,7 @@ Foam::label Foam::voidFractionModel::collectStatistics(const particleData& parti
         fractionSum[p] = weights_.sum(p);
         found[p] = (centreCells_[p] >= 0);
     }
-    if (Pstream::parRun())
-    {
-        // (weight sum, holders of the centre) combined in one exchange
-        List<vector2D> combined(n);
-        forAll(combined, p) combined[p] = vector2D(fractionSum[p], found[p]);
-        holders_.combine(combined, plusEqOp<vector2D>());
-        forAll(combined, p)
-        {
-            fractionSum[p] = combined[p].x();
-            found[p] = label(combined[p].y());
-        }
-    }
+    combineSums(fractionSum, found);
 
     // counts travel as scalars: exact far beyond any particle count
     enum { kNParticles, kNOutside, kNCut, kParticleVolume, kMeshedVolume, kSolid, kNOver, kNSums };
@@ -116,7 +105,7 @@ Foam::label Foam::voidFractionModel::collectStatistics(const particleData& parti
         const scalar Vp = particleVolumes_[p];
         sums[kParticleVolume] += Vp;
         sums[kMeshedVolume] += fractionSum[p]*Vp;
-        if (!found[p]) sums[kNOutside] += 1;
+        if (found[p] == 0) sums[kNOutside] += 1;
         else if (fractionSum[p] < 1 - 1e-9) sums[kNCut] += 1;
     }
     sums[kSolid] = sum(solid_);

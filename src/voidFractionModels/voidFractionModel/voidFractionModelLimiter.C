@@ -5,13 +5,8 @@
 
 Foam::label Foam::voidFractionModel::cellsOverLimit() const
 {
-    const scalarField& V = mesh_.V();
-    const scalar maxSolid = 1 - alphaMin_;
     label nOver = 0;
-    forAll(solid_, celli)
-    {
-        nOver += (solid_[celli] > maxSolid*V[celli]*(1 + 1e-12));
-    }
+    forAll(solid_, celli) nOver += overLimit(celli);
     return nOver;
 }
 
@@ -60,7 +55,7 @@ Foam::scalar Foam::voidFractionModel::limitSolidFraction(const label nOverAll)
         forAll(solid_, celli)
         {
             room[celli] = max(maxSolid*V[celli] - solid_[celli], 0.0);
-            const bool over = solid_[celli] > maxSolid*V[celli]*(1 + 1e-12);
+            const bool over = overLimit(celli);
             excess[celli] = over ? solid_[celli] - maxSolid*V[celli] : 0;
             nOver += over;
         }

@@ -78,6 +78,34 @@ void Foam::voidFractionModel::gather
 
 
 template<class TypeA, class TypeB>
+void Foam::voidFractionModel::combineSums
+(
+    Field<TypeA>& a,
+    Field<TypeB>& b
+) const
+{
+    const direction nA = pTraits<TypeA>::nComponents;
+    const direction nB = pTraits<TypeB>::nComponents;
+    static_assert(nA + nB <= 6, "two sums of at most six components");
+    if (!Pstream::parRun()) return;
+
+    // a symmTensor only carries the six sums through the exchange
+    List<symmTensor> both(a.size(), Zero);
+    forAll(both, p)
+    {
+        for (direction d = 0; d < nA; ++d) both[p][d] = component(a[p], d);
+        for (direction d = 0; d < nB; ++d) both[p][nA + d] = component(b[p], d);
+    }
+    holders_.combine(both, plusEqOp<symmTensor>());
+    forAll(both, p)
+    {
+        for (direction d = 0; d < nA; ++d) setComponent(a[p], d) = both[p][d];
+        for (direction d = 0; d < nB; ++d) setComponent(b[p], d) = both[p][nA + d];
+    }
+}
+
+
+template<class TypeA, class TypeB>
 void Foam::voidFractionModel::gather
 (
     const Field<TypeA>& perCellA,
@@ -86,36 +114,7 @@ void Foam::voidFractionModel::gather
     Field<TypeB>& perParticleB
 )
 {
-    const direction nA = pTraits<TypeA>::nComponents;
-    const direction nB = pTraits<TypeB>::nComponents;
-    static_assert(nA + nB <= 6, "two gathers of at most six components");
     gatherHere(perCellA, perParticleA);
     gatherHere(perCellB, perParticleB);
-    if (!Pstream::parRun()) return;
-
-    // a symmTensor only carries the six sums through the exchange
-    List<symmTensor> both(perParticleA.size(), Zero);
-    forAll(both, p)
-    {
-        for (direction d = 0; d < nA; ++d)
-        {
-            both[p][d] = component(perParticleA[p], d);
-        }
-        for (direction d = 0; d < nB; ++d)
-        {
-            both[p][nA + d] = component(perParticleB[p], d);
-        }
-    }
-    holders_.combine(both, plusEqOp<symmTensor>());
-    forAll(both, p)
-    {
-        for (direction d = 0; d < nA; ++d)
-        {
-            setComponent(perParticleA[p], d) = both[p][d];
-        }
-        for (direction d = 0; d < nB; ++d)
-        {
-            setComponent(perParticleB[p], d) = both[p][nA + d];
-        }
-    }
+    combineSums(perParticleA, perParticleB);
 }

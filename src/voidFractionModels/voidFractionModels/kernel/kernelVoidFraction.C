@@ -45,6 +45,20 @@ Foam::voidFractionModels::kernel::kernel
     cellSize_.setSize(mesh.nCells());
     forAll(cellSize_, celli) cellSize_[celli] = cellSize(celli);
     maxCellSize_ = returnReduce(max(cellSize_), maxOp<scalar>());
+    if (locator_.isTensorGrid())
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            const scalarList& g = locator_.gridPlanes(d);
+            gridCentres_[d].setSize(g.size() - 1);
+            gridWidths_[d].setSize(g.size() - 1);
+            forAll(gridCentres_[d], i)
+            {
+                gridCentres_[d][i] = 0.5*(g[i] + g[i + 1]);
+                gridWidths_[d][i] = g[i + 1] - g[i];
+            }
+        }
+    }
 }
 
 
@@ -56,6 +70,8 @@ Foam::scalar Foam::voidFractionModels::kernel::imageReach(const scalar) const
 
 void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bool reflect)
 {
+    // no wall: no particle has images
+    wallClearance_.setSize(mesh.nCells(), GREAT);
     if (!reflect) return;
     const vectorField& Sf = mesh.faceAreas();
     const vectorField& Cf = mesh.faceCentres();
@@ -123,15 +139,35 @@ void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bo
     }
     walls_.setSize(normals.size());
     forAll(walls_, i) walls_[i] = wallPlane{normals[order[i]], offsets[order[i]]};
+
+    const pointField& points = mesh.points();
+    const labelListList& cellPoints = mesh.cellPoints();
+    forAll(wallClearance_, celli)
+    {
+        for (const wallPlane& P : walls_)
+        {
+            for (const label pointi : cellPoints[celli])
+            {
+                wallClearance_[celli] =
+                    min(wallClearance_[celli], P.offset - (P.normal & points[pointi]));
+            }
+        }
+    }
 }
 
 
-void Foam::voidFractionModels::kernel::findImages(const point& c, const scalar rc)
+void Foam::voidFractionModels::kernel::findImages
+(
+    const point& c,
+    const label celli,
+    const scalar rc
+)
 {
     images_.clear();
     images_.append(c);
     imageWall_.clear();
     imageWall_.append(-1);
+    if (celli >= 0 && rc <= wallClearance_[celli]) return;
     label nNear = 0;
     forAll(walls_, w)
     {
@@ -152,6 +188,89 @@ void Foam::voidFractionModels::kernel::findImages(const point& c, const scalar r
 }
 
 
+void Foam::voidFractionModels::kernel::axisFactors
+(
+    const direction d,
+    const point& c,
+    const scalar b,
+    const scalar rc
+)
+{
+    const scalarList& g = locator_.gridPlanes(d);
+    const scalarList& xc = gridCentres_[d];
+    const label n = xc.size();
+
+    // cells [ia, ib) whose centres lie within rc of xm; on uniform planes
+    // by arithmetic (truncation of non-negative values: no floor or ceil
+    // calls), corrected where rounding put a centre on the wrong side
+    const scalar invH = locator_.invSpacing(d);
+    auto reach = [&](const scalar xm, label& ia, label& ib)
+    {
+        ia = ib = 0;
+        if (xm + rc < g.first() || xm - rc > g.last()) return;
+        if (invH > 0)
+        {
+            const scalar ta = min(max((xm - rc - xc[0])*invH, scalar(0)), scalar(n));
+            const scalar tb = min(max((xm + rc - xc[0])*invH, scalar(-1)), scalar(n));
+            ia = label(ta);
+            ia += (ia < ta);
+            ib = (tb < 0) ? 0 : label(tb) + 1;
+            ib = min(ib, n);
+            if (ia > 0 && xc[ia - 1] >= xm - rc) --ia;
+            else if (ia < n && xc[ia] < xm - rc) ++ia;
+            if (ib < n && xc[ib] <= xm + rc) ++ib;
+            else if (ib > 0 && xc[ib - 1] > xm + rc) --ib;
+            ib = max(ib, ia);
+            return;
+        }
+        ia = max(locator_.interval(d, max(xm - rc, g.first())), 0);
+        while (ia < n && xc[ia] < xm - rc) ++ia;
+        ib = ia;
+        while (ib < n && xc[ib] <= xm + rc) ++ib;
+    };
+
+    // the particle and the images that differ from it in direction d only
+    label lo = n, hi = 0;
+    label nRanges = 0;
+    for (const point& image : images_)
+    {
+        if
+        (
+            (d == 0 || image[0] == c[0])
+         && (d == 1 || image[1] == c[1])
+         && (d == 2 || image[2] == c[2])
+        )
+        {
+            axisRange& R = ranges_[nRanges];
+            R.x = image[d];
+            reach(R.x, R.first, R.end);
+            if (R.end > R.first)
+            {
+                lo = min(lo, R.first);
+                hi = max(hi, R.end);
+                ++nRanges;
+            }
+        }
+    }
+    firstIndex_[d] = lo;
+    DynamicList<scalar>& f = factor_[d];
+    f.setSize(max(hi - lo, 0));
+    const scalarList& h = gridWidths_[d];
+    const scalar invB2 = 1/sqr(b);
+    if (nRanges > 1) f = 0;
+    scalar* fi = f.data() - lo;
+    for (label k = 0; k < nRanges; ++k)
+    {
+        const axisRange& R = ranges_[k];
+        for (label i = R.first; i < R.end; ++i)
+        {
+            const scalar w = h[i]*exp(-sqr(xc[i] - R.x)*invB2);
+            fi[i] = (nRanges == 1) ? w : fi[i] + w;
+        }
+    }
+}
+
+
 void Foam::voidFractionModels::kernel::gridWeights
 (
     const label p,
@@ -160,67 +279,39 @@ void Foam::voidFractionModels::kernel::gridWeights
     const scalar rc
 )
 {
-    for (direction d = 0; d < 3; ++d)
-    {
-        DynamicList<label>& index = index_[d];
-        DynamicList<scalar>& factor = factor_[d];
-        index.clear();
-        factor.clear();
-        const scalarList& g = locator_.gridPlanes(d);
-        const label n = g.size() - 1;
-        for (const point& image : images_)
-        {
-            // the images that differ from the particle in direction d only
-            bool sameElsewhere = true;
-            for (direction e = 0; e < 3; ++e)
-            {
-                if (e != d && image[e] != c[e]) sameElsewhere = false;
-            }
-            if (!sameElsewhere) continue;
-            const scalar xm = image[d];
-            const scalar lo = max(xm - rc, g.first());
-            if (lo > g.last()) continue;
-            for (label i = locator_.interval(d, lo); i >= 0 && i < n; ++i)
-            {
-                const scalar xc = 0.5*(g[i] + g[i + 1]);
-                if (xc > xm + rc) break;
-                if (xc < xm - rc) continue;
-                const scalar f = exp(-sqr(xc - xm)/sqr(b));
-                const label k = index.find(i);
-                if (k < 0)
-                {
-                    index.append(i);
-                    factor.append(f);
-                }
-                else
-                {
-                    factor[k] += f;
-                }
-            }
-        }
-    }
+    for (direction d = 0; d < 3; ++d) axisFactors(d, c, b, rc);
+    const scalarList& fx = factor_[0];
+    const scalarList& fy = factor_[1];
+    const scalarList& fz = factor_[2];
+    const label n = fx.size()*fy.size()*fz.size();
 
-    const label seed = centreCells_[p];
-    const label k0 = weights_.size();
-    if (seed >= 0) weights_.append(seed, 0);
-    const scalarField& V = mesh_.V();
-    scalar sum = 0;
-    forAll(index_[2], kz)
+    // the cell volume is the product of the widths: separable, like the
+    // Gaussian, so the row sum is the product of the axis sums
+    sums_[p] = sum(fx)*sum(fy)*sum(fz);
+    if (n == 0)
     {
-        forAll(index_[1], ky)
+        if (centreCells_[p] >= 0) weights_.append(centreCells_[p], 0);
+        return;
+    }
+    const label k0 = weights_.extend(n);
+    label* cells = weights_.cellsData() + k0;
+    scalar* fractions = weights_.fractionsData() + k0;
+    forAll(fz, kz)
+    {
+        forAll(fy, ky)
         {
-            const scalar fyz = factor_[1][ky]*factor_[2][kz];
-            forAll(index_[0], kx)
+            const scalar fyz = fy[ky]*fz[kz];
+            const label* row = locator_.gridRow
+            (
+                firstIndex_[0], firstIndex_[1] + ky, firstIndex_[2] + kz
+            );
+            forAll(fx, kx)
             {
-                const label celli = locator_.gridCell(index_[0][kx], index_[1][ky], index_[2][kz]);
-                const scalar w = V[celli]*factor_[0][kx]*fyz;
-                sum += w;
-                if (celli == seed) weights_.setFraction(k0, w);
-                else weights_.append(celli, w);
+                *cells++ = row[kx];
+                *fractions++ = fx[kx]*fyz;
             }
         }
     }
-    sums_[p] = sum;
 }
 
 
@@ -291,7 +382,7 @@ void Foam::voidFractionModels::kernel::distribute
         if (b_[p] > 0)
         {
             const scalar rc = cutoff_*b_[p];
-            findImages(x[p], rc);
+            findImages(x[p], centreCells_[p], rc);
             if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
             else walkWeights(p, x[p], b_[p], rc);
         }

@@ -200,33 +200,20 @@ void Foam::voidFractionModels::kernel::axisFactors
     const scalarList& xc = gridCentres_[d];
     const label n = xc.size();
 
-    // cells [ia, ib) whose centres lie within rc of xm; on uniform planes
-    // by arithmetic (truncation of non-negative values: no floor or ceil
-    // calls), corrected where rounding put a centre on the wrong side
-    const scalar invH = locator_.invSpacing(d);
+    // cells [ia, ib) whose centres lie within rc of xm: the interval
+    // holding each end of the reach (arithmetic on uniform planes), then
+    // that cell's centre decides whether it is in
     auto reach = [&](const scalar xm, label& ia, label& ib)
     {
         ia = ib = 0;
         if (xm + rc < g.first() || xm - rc > g.last()) return;
-        if (invH > 0)
-        {
-            const scalar ta = min(max((xm - rc - xc[0])*invH, scalar(0)), scalar(n));
-            const scalar tb = min(max((xm + rc - xc[0])*invH, scalar(-1)), scalar(n));
-            ia = label(ta);
-            ia += (ia < ta);
-            ib = (tb < 0) ? 0 : label(tb) + 1;
-            ib = min(ib, n);
-            if (ia > 0 && xc[ia - 1] >= xm - rc) --ia;
-            else if (ia < n && xc[ia] < xm - rc) ++ia;
-            if (ib < n && xc[ib] <= xm + rc) ++ib;
-            else if (ib > 0 && xc[ib - 1] > xm + rc) --ib;
-            ib = max(ib, ia);
-            return;
-        }
-        ia = max(locator_.interval(d, max(xm - rc, g.first())), 0);
-        while (ia < n && xc[ia] < xm - rc) ++ia;
-        ib = ia;
-        while (ib < n && xc[ib] <= xm + rc) ++ib;
+        const scalar from = max(xm - rc, g.first());
+        const scalar to = min(xm + rc, g.last());
+        ia = locator_.interval(d, from);
+        ia += (xc[ia] < from);
+        ib = locator_.interval(d, to);
+        ib += (xc[ib] <= to);
+        ib = max(ib, ia);
     };
 
     // the particle and the images that differ from it in direction d only

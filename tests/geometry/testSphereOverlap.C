@@ -146,6 +146,27 @@ double polyhedronVolume(const polyhedron& P, const vec3& c, double R)
     }
     return v;
 }
+
+// The same through the caps of the faces (convex polyhedron): the ball when
+// the centre is inside, else nothing, corrected face by face.
+double polyhedronVolumeByCaps(const polyhedron& P, const vec3& c, double R)
+{
+    double v = 0;
+    bool inside = true;
+    for (const auto& f : P.f)
+    {
+        auto pt = [&](std::size_t i) { return P.v[f[i]]; };
+        vec3 n = cross(pt(1) - pt(0), pt(2) - pt(0));
+        n = (1.0/mag(n))*n;
+        const double ds = dot(pt(0) - c, n);
+        // on a face plane, inside or outside is a matter of round-off: the
+        // cones decide there, as in the library
+        if (std::fabs(ds) < 1e-9*R) return polyhedronVolume(P, c, R);
+        inside = inside && ds > 0;
+        v -= (ds > 0 ? 1 : -1)*polygonCap(c, R, pt, f.size(), n);
+    }
+    return inside ? v + sphereVolume(R) : v;
+}
 }
 
 int main()
@@ -173,7 +194,7 @@ int main()
 
     std::mt19937_64 rng(12345);
     std::uniform_real_distribution<double> U(-1, 1);
-    double worstBox = 0, worstTet = 0, worstFast = 0;
+    double worstBox = 0, worstTet = 0, worstFast = 0, worstCaps = 0;
     for (int k = 0; k < 60; ++k)
     {
         // random boxes, some smaller than the sphere, centre anywhere near
@@ -191,7 +212,11 @@ int main()
         const double refT = referenceVolume(T.v, T.e, ct, R);
         const double errT = std::fabs(polyhedronVolume(T, ct, R) - refT)/V;
         worstTet = std::max(worstTet, errT);
+        worstCaps = std::max(worstCaps, std::fabs(polyhedronVolumeByCaps(box(a, b), c, R) - ref)/V);
+        worstCaps = std::max(worstCaps, std::fabs(polyhedronVolumeByCaps(T, ct, R) - refT)/V);
     }
+    near("random boxes and tets through the face caps vs integration", worstCaps, 0, 1e-12);
+    std::printf("worst relative error through the caps %.2e\n", worstCaps);
     near("random boxes, general path vs integration (rel. to sphere)", worstBox, 0, 1e-12);
     near("random boxes, fast path vs integration (rel. to sphere)", worstFast, 0, 1e-12);
     near("random tets vs integration (rel. to sphere)", worstTet, 0, 1e-12);
@@ -213,6 +238,28 @@ int main()
         double tsum = 0;
         for (auto& t : t6) tsum += polyhedronVolume(tet(B.v[t[0]], B.v[t[1]], B.v[t[2]], B.v[t[3]]), c, R);
         near("six tets sum to their box", tsum, ballBoxVolume(c, R, B.v[0], B.v[7]), 1e-14*V);
+        // the same six tets through the caps, for centres inside, beside and
+        // outside the box, and on the box's diagonal (on every tet's edge)
+        for (const vec3 cc : {c, vec3{0.4, 0.2, 0.5}, vec3{0.9, -0.1, 0.3}, vec3{0.1, -0.05, 0.2}})
+        {
+            double csum = 0;
+            for (auto& t : t6)
+            {
+                csum += polyhedronVolumeByCaps(tet(B.v[t[0]], B.v[t[1]], B.v[t[2]], B.v[t[3]]), cc, R);
+            }
+            near("six tets through the caps sum to their box", csum, ballBoxVolume(cc, R, B.v[0], B.v[7]), 1e-14*V);
+        }
+        near("cap of a face wholly over the disk",
+             polygonCap(vec3{0.5, 0, 0}, R, [&](std::size_t i) { return box(lo, hi).v[box(lo, hi).f[1][i]]; },
+                        4, {1, 0, 0}), capVolume(R, 0.5), 1e-15*V);
+        // the foot of the centre on a face's vertex or edge (the angle there
+        // is not 2 pi or 0), inside and outside the tet
+        const polyhedron T = tet({0, 0, 0}, {2, 0, 0}, {0.5, 2, 0}, {0.7, 0.6, 2});
+        for (const vec3 cc : {vec3{0.5, 2, 0.25}, vec3{0.5, 2, -0.25}, vec3{1, 0, 0.25}, vec3{1, 0, -0.25}})
+        {
+            near("caps: foot on a face's vertex or edge", polyhedronVolumeByCaps(T, cc, R),
+                 polyhedronVolume(T, cc, R), 1e-13*V);
+        }
     }
     // tangencies: a sphere touching a face, edge or corner from inside and outside
     for (double eps : {0.0, 1e-15, -1e-15, 1e-9})

@@ -14,9 +14,14 @@ namespace
         const double R
     )
     {
-        const double dx = std::fmax(std::fmax(lo.x - c.x, c.x - hi.x), 0.0);
-        const double dy = std::fmax(std::fmax(lo.y - c.y, c.y - hi.y), 0.0);
-        const double dz = std::fmax(std::fmax(lo.z - c.z, c.z - hi.z), 0.0);
+        // plain comparisons: std::fmax is a library call
+        auto gap = [](double lo, double x, double hi)
+        {
+            return x < lo ? lo - x : (x > hi ? x - hi : 0.0);
+        };
+        const double dx = gap(lo.x, c.x, hi.x);
+        const double dy = gap(lo.y, c.y, hi.y);
+        const double dz = gap(lo.z, c.z, hi.z);
         return dx*dx + dy*dy + dz*dz < R*R;
     }
 }
@@ -28,9 +33,10 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
     cellMin_(mesh.nCells()),
     cellMax_(mesh.nCells()),
     isBox_(mesh.nCells(), false),
+    isConvex_(mesh.nCells(), false),
     faceMin_(mesh.nFaces()),
     faceMax_(mesh.nFaces()),
-    faceNormal_(mesh.nFaces()),
+    facePlanes_(mesh.nFaces()),
     planarFace_(mesh.nFaces(), true),
     emptyDir_(-1),
     thickness_(0),
@@ -45,7 +51,7 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
     forAll(faces, facei)
     {
         const vector n = Sf[facei]/mag(Sf[facei]);
-        faceNormal_[facei] = toVec3(n);
+        facePlanes_[facei] = {toVec3(n), n & Cf[facei]};
         const boundBox fbb(pts, faces[facei], false);
         faceMin_[facei] = toVec3(fbb.min());
         faceMax_[facei] = toVec3(fbb.max());
@@ -69,6 +75,21 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
         isBox_[celli] =
             c.size() == 6
          && mag(bb.volume() - mesh.V()[celli]) < 1e-10*mesh.V()[celli];
+        if (isBox_[celli]) continue;
+        // convex: every point of the cell on the inner side of every face
+        const labelList cellPoints(c.labels(faces));
+        const scalar tol = 1e-10*bb.mag();
+        isConvex_[celli] = true;
+        for (const label facei : c)
+        {
+            const scalar sign = mesh.faceOwner()[facei] == celli ? 1 : -1;
+            bool inner = planarFace_[facei];
+            for (const label pointi : cellPoints)
+            {
+                inner = inner && sign*((pts[pointi] - Cf[facei]) & Sf[facei]) <= tol*mag(Sf[facei]);
+            }
+            isConvex_[celli] = isConvex_[celli] && inner;
+        }
     }
 
     DynamicList<label> bFaces;
@@ -143,12 +164,11 @@ Foam::label Foam::sphereCellOverlap::planesCrossed
     const scalar R
 ) const
 {
-    const vectorField& Cf = mesh_.faceCentres();
     const labelList& own = mesh_.faceOwner();
     label n = 0;
     for (const label facei : mesh_.cells()[celli])
     {
-        scalar s = sphereOverlap::dot(toVec3(Cf[facei] - c), faceNormal_[facei]);
+        scalar s = planeDistance(facei, toVec3(c));
         if (own[facei] != celli) s = -s;
         if (emptyDir_ >= 0 && emptyFace_[facei]) continue;
         if (s < R || !planarFace_[facei]) ++n;
@@ -175,7 +195,7 @@ Foam::scalar Foam::sphereCellOverlap::faceCone
     }
     if (planarFace_[facei])
     {
-        return polygonCone(c, R, pt, n, faceNormal_[facei]);
+        return polygonCone(c, R, pt, n, facePlanes_[facei].normal);
     }
     // warped: the fan of triangles around the face centre
     const vec3 fc = toVec3(mesh_.faceCentres()[facei]);
@@ -200,24 +220,66 @@ Foam::scalar Foam::sphereCellOverlap::generalCellVolume
     const scalar R
 ) const
 {
-    const label nInternal = mesh_.nInternalFaces();
     scalar v = 0;
     for (const label facei : mesh_.cells()[celli])
     {
         const scalar sign = (mesh_.faceOwner()[facei] == celli) ? 1 : -1;
-        if (facei >= nInternal)
-        {
-            v += sign*faceCone(facei, c, R);
-            continue;
-        }
-        label k = doneFaces_.find(facei);
-        if (k < 0)
-        {
-            doneFaces_.append(facei);
-            doneValues_.append(faceCone(facei, c, R));
-            k = doneFaces_.size() - 1;
-        }
-        v += sign*doneValues_[k];
+        v += sign*faceValue
+        (
+            facei, doneFaces_, doneValues_,
+            [&](const label f) { return faceCone(f, c, R); }
+        );
+    }
+    return v;
+}
+
+
+Foam::scalar Foam::sphereCellOverlap::convexCellVolume
+(
+    const label celli,
+    const sphereOverlap::vec3& c,
+    const scalar R
+) const
+{
+    using namespace sphereOverlap;
+    const labelList& own = mesh_.faceOwner();
+    const cell& faces = mesh_.cells()[celli];
+    // distance of the centre inside each face's plane
+    auto inward = [&](const label facei)
+    {
+        const scalar ds = planeDistance(facei, c);
+        return own[facei] == celli ? ds : -ds;
+    };
+    bool inside = true;
+    for (const label facei : faces)
+    {
+        const scalar ds = inward(facei);
+        if (ds <= -R) return 0;
+        // on a face plane, inside or not is round-off: the cones decide
+        if (std::fabs(ds) < 1e-9*R) return generalCellVolume(celli, c, R);
+        inside = inside && ds > 0;
+    }
+    const pointField& pts = mesh_.points();
+    scalar v = inside ? sphereVolume(R) : 0;
+    for (const label facei : faces)
+    {
+        const scalar ds = inward(facei);
+        if (ds >= R) continue;
+        const scalar cap = faceValue
+        (
+            facei, doneCapFaces_, doneCaps_,
+            [&](const label f)
+            {
+                if (!reaches(faceMin_[f], faceMax_[f], c, R)) return 0.0;
+                const face& fp = mesh_.faces()[f];
+                return polygonCap
+                (
+                    c, R, [&](std::size_t i) { return toVec3(pts[fp[i]]); },
+                    fp.size(), facePlanes_[f].normal
+                );
+            }
+        );
+        v += ds > 0 ? -cap : cap;
     }
     return v;
 }
@@ -238,6 +300,10 @@ Foam::scalar Foam::sphereCellOverlap::cellVolume
     {
         return sphereOverlap::ballBoxVolume(toVec3(c), R, cellMin_[celli], cellMax_[celli]);
     }
+    if (isConvex_[celli])
+    {
+        return convexCellVolume(celli, toVec3(c), R);
+    }
     return generalCellVolume(celli, toVec3(c), R);
 }
 
@@ -253,6 +319,8 @@ void Foam::sphereCellOverlap::overlaps
 {
     doneFaces_.clear();
     doneValues_.clear();
+    doneCapFaces_.clear();
+    doneCaps_.clear();
     forEachReachedCell
     (
         c, R, seeds,

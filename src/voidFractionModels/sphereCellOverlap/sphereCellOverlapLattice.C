@@ -33,7 +33,7 @@ long Foam::sphereCellOverlap::convexCellCount
             for (const label facei : faces)
             {
                 const bool owner = (own[facei] == celli);
-                const vec3 nn = (owner ? 1.0 : -1.0)*faceNormal_[facei];
+                const vec3 nn = (owner ? 1.0 : -1.0)*facePlanes_[facei].normal;
                 const bool strict = owner && facei < nInternal;
                 const double rhs = dot(nn, toVec3(Cf[facei])) - nn.x*x - nn.y*y;
                 if (nn.z > 0)

@@ -45,3 +45,21 @@ void Foam::sphereCellOverlap::forEachReachedCell
         }
     }
 }
+
+
+template<class Compute>
+Foam::scalar Foam::sphereCellOverlap::faceValue
+(
+    const label facei,
+    DynamicList<label>& done,
+    DynamicList<scalar>& values,
+    const Compute& compute
+) const
+{
+    if (facei >= mesh_.nInternalFaces()) return compute(facei);
+    const label k = done.find(facei);
+    if (k >= 0) return values[k];
+    done.append(facei);
+    values.append(compute(facei));
+    return values.last();
+}

@@ -33,7 +33,7 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
     cellMin_(mesh.nCells()),
     cellMax_(mesh.nCells()),
     isBox_(mesh.nCells(), false),
-    isConvex_(mesh.nCells(), false),
+    cellPlaneStart_(mesh.nCells() + 1, 0),
     faceMin_(mesh.nFaces()),
     faceMax_(mesh.nFaces()),
     facePlanes_(mesh.nFaces()),
@@ -66,6 +66,7 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
         }
     }
 
+    DynamicList<cellPlane> planes;
     forAll(mesh.cells(), celli)
     {
         const cell& c = mesh.cells()[celli];
@@ -75,22 +76,31 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
         isBox_[celli] =
             c.size() == 6
          && mag(bb.volume() - mesh.V()[celli]) < 1e-10*mesh.V()[celli];
+        cellPlaneStart_[celli + 1] = cellPlaneStart_[celli];
         if (isBox_[celli]) continue;
         // convex: every point of the cell on the inner side of every face
         const labelList cellPoints(c.labels(faces));
         const scalar tol = 1e-10*bb.mag();
-        isConvex_[celli] = true;
+        bool convex = true;
         for (const label facei : c)
         {
             const scalar sign = mesh.faceOwner()[facei] == celli ? 1 : -1;
-            bool inner = planarFace_[facei];
+            convex = convex && planarFace_[facei];
             for (const label pointi : cellPoints)
             {
-                inner = inner && sign*((pts[pointi] - Cf[facei]) & Sf[facei]) <= tol*mag(Sf[facei]);
+                convex = convex && sign*((pts[pointi] - Cf[facei]) & Sf[facei]) <= tol*mag(Sf[facei]);
             }
-            isConvex_[celli] = isConvex_[celli] && inner;
         }
+        if (!convex) continue;
+        for (const label facei : c)
+        {
+            const scalar sign = mesh.faceOwner()[facei] == celli ? 1 : -1;
+            const facePlane& fp = facePlanes_[facei];
+            planes.append({sign*fp.normal, sign*fp.offset, facei});
+        }
+        cellPlaneStart_[celli + 1] = planes.size();
     }
+    cellPlanes_.transfer(planes);
 
     DynamicList<label> bFaces;
     for (const polyPatch& pp : mesh.boundaryMesh())
@@ -242,18 +252,13 @@ Foam::scalar Foam::sphereCellOverlap::convexCellVolume
 ) const
 {
     using namespace sphereOverlap;
-    const labelList& own = mesh_.faceOwner();
-    const cell& faces = mesh_.cells()[celli];
-    // distance of the centre inside each face's plane
-    auto inward = [&](const label facei)
-    {
-        const scalar ds = planeDistance(facei, c);
-        return own[facei] == celli ? ds : -ds;
-    };
+    const cellPlane* first = cellPlanes_.cdata() + cellPlaneStart_[celli];
+    const cellPlane* last = cellPlanes_.cdata() + cellPlaneStart_[celli + 1];
     bool inside = true;
-    for (const label facei : faces)
+    for (const cellPlane* p = first; p != last; ++p)
     {
-        const scalar ds = inward(facei);
+        // distance of the centre inside the face's plane
+        const scalar ds = p->offset - dot(p->normal, c);
         if (ds <= -R) return 0;
         // on a face plane, inside or not is round-off: the cones decide
         if (std::fabs(ds) < 1e-9*R) return generalCellVolume(celli, c, R);
@@ -261,13 +266,13 @@ Foam::scalar Foam::sphereCellOverlap::convexCellVolume
     }
     const pointField& pts = mesh_.points();
     scalar v = inside ? sphereVolume(R) : 0;
-    for (const label facei : faces)
+    for (const cellPlane* p = first; p != last; ++p)
     {
-        const scalar ds = inward(facei);
+        const scalar ds = p->offset - dot(p->normal, c);
         if (ds >= R) continue;
         const scalar cap = faceValue
         (
-            facei, doneCapFaces_, doneCaps_,
+            p->face, doneCapFaces_, doneCaps_,
             [&](const label f)
             {
                 if (!reaches(faceMin_[f], faceMax_[f], c, R)) return 0.0;
@@ -300,7 +305,7 @@ Foam::scalar Foam::sphereCellOverlap::cellVolume
     {
         return sphereOverlap::ballBoxVolume(toVec3(c), R, cellMin_[celli], cellMax_[celli]);
     }
-    if (isConvex_[celli])
+    if (isConvex(celli))
     {
         return convexCellVolume(celli, toVec3(c), R);
     }

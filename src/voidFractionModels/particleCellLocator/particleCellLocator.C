@@ -183,65 +183,6 @@ Foam::label Foam::particleCellLocator::findCell
 }
 
 
-bool Foam::particleCellLocator::planeCuts
-(
-    const label centreCell,
-    const point& c,
-    const scalar R,
-    bool cut[3],
-    scalar offset[3],
-    label low[3],
-    label high[3]
-) const
-{
-    // the centre's interval per direction; -1 or n when it lies below or
-    // above this grid (a periodic image, a particle on another processor)
-    label index[3];
-    if (centreCell >= 0)
-    {
-        gridIndex(centreCell, index);
-    }
-    else
-    {
-        for (direction d = 0; d < 3; ++d)
-        {
-            index[d] = interval(d, c[d]);
-            if (index[d] < 0) index[d] = (c[d] < grid_[d].first()) ? -1 : grid_[d].size() - 1;
-        }
-    }
-    for (direction d = 0; d < 3; ++d)
-    {
-        const scalarList& g = grid_[d];
-        const label n = g.size() - 1;
-        const label i = index[d];
-        offset[d] = 0;
-        if (i == -1 || i == n)
-        {
-            // outside: at most the end plane may cut it, and no other
-            const bool fromBelow = (i == -1);
-            const scalar gap = fromBelow ? g[0] - c[d] : c[d] - g[n];
-            const scalar next = fromBelow ? g[1] - c[d] : c[d] - g[n - 1];
-            if (next < R) return false;
-            cut[d] = (gap < R);
-            low[d] = fromBelow ? -1 : (cut[d] ? n - 1 : -1);
-            high[d] = fromBelow ? (cut[d] ? 0 : -1) : -1;
-            offset[d] = cut[d] ? (fromBelow ? g[0] - c[d] : g[n] - c[d]) : 0;
-            continue;
-        }
-        // which side a sphere is cut on is random: selects, not branches
-        const scalar toLow = g[i] - c[d], toHigh = g[i + 1] - c[d];
-        const bool below = (-toLow < R), above = (toHigh < R);
-        if (below && above) return false;
-        cut[d] = below || above;
-        offset[d] = below ? toLow : (above ? toHigh : 0);
-        low[d] = i - label(below);
-        const label up = i + label(above);
-        high[d] = (up == n) ? -1 : up;
-    }
-    return true;
-}
-
-
 Foam::label Foam::particleCellLocator::planesCrossed
 (
     const label centreCell,

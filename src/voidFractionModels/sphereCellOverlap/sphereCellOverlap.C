@@ -174,8 +174,18 @@ Foam::label Foam::sphereCellOverlap::planesCrossed
     const scalar R
 ) const
 {
-    const labelList& own = mesh_.faceOwner();
     label n = 0;
+    if (emptyDir_ < 0 && isConvex(celli))
+    {
+        // planar faces, outward planes side by side
+        const sphereOverlap::vec3 c3 = toVec3(c);
+        for (label k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
+        {
+            n += (cellPlanes_[k].offset - sphereOverlap::dot(cellPlanes_[k].normal, c3) < R);
+        }
+        return n;
+    }
+    const labelList& own = mesh_.faceOwner();
     for (const label facei : mesh_.cells()[celli])
     {
         scalar s = planeDistance(facei, toVec3(c));

@@ -36,6 +36,22 @@ void Foam::sphereCellOverlap::forEachReachedCell
     {
         const label celli = queue_[q];
         if (!visitor(celli)) continue;
+        if (!cube && isConvex(celli))
+        {
+            // a cell the sphere reaches beyond this one is reached through
+            // faces the sphere crosses: whole on a face plane's inner side,
+            // it does not lead on through that face
+            const sphereOverlap::vec3 c3 = toVec3(c);
+            for (label k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
+            {
+                const cellPlane& p = cellPlanes_[k];
+                if (p.face < nInternal && p.offset - sphereOverlap::dot(p.normal, c3) < R)
+                {
+                    enqueue(own[p.face] == celli ? nei[p.face] : own[p.face]);
+                }
+            }
+            continue;
+        }
         for (const label facei : mesh_.cells()[celli])
         {
             if (facei < nInternal)

@@ -8,7 +8,7 @@ hexahedron of the same size split into 6 tetrahedra). demVoidFraction
 times repeated calls after a warm-up; the median is reported, and each
 model's time relative to centroid on the same mesh in the same run. Every
 model runs with its defaults; voxel also at the issue's 50 voxels per sample
-side and at 10 voxels per particle diameter. Three rounds over all models;
+side and at 10 voxels per particle diameter. Five rounds over all models;
 the median over the rounds is reported.
 
 usage: benchmarks/speed.py [N]   (N particles, default 200000)
@@ -71,7 +71,7 @@ def run(case, label, model, coeffs, repeat):
 # is timed in each of ROUNDS rounds, and the table gives the median over the
 # rounds of its median time and of its ratio to centroid in the same round
 # (one round for the sub-grid models on tetrahedra, which take seconds a call).
-ROUNDS = 3
+ROUNDS = 5
 cart = new_case(os.path.join(work, "cartesian"), box_block_mesh((0, 0, 0), (L, L, L), (ncell,) * 3))
 tet = new_case(os.path.join(work, "tetrahedral"))
 sh("rm -rf constant/polyMesh && /usr/bin/python3 %s/tests/makeTetMesh.py . %d %r 0.0" % (ROOT, ncell, L), tet)

@@ -181,7 +181,7 @@ Foam::label Foam::sphereCellOverlap::planesCrossed
         const sphereOverlap::vec3 c3 = toVec3(c);
         for (label k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
         {
-            n += (cellPlanes_[k].offset - sphereOverlap::dot(cellPlanes_[k].normal, c3) < R);
+            n += (cellPlanes_[k].inside(c3) < R);
         }
         return n;
     }
@@ -267,8 +267,7 @@ Foam::scalar Foam::sphereCellOverlap::convexCellVolume
     bool inside = true;
     for (const cellPlane* p = first; p != last; ++p)
     {
-        // distance of the centre inside the face's plane
-        const scalar ds = p->offset - dot(p->normal, c);
+        const scalar ds = p->inside(c);
         if (ds <= -R) return 0;
         // on a face plane, inside or not is round-off: the cones decide
         if (std::fabs(ds) < 1e-9*R) return generalCellVolume(celli, c, R);
@@ -278,7 +277,7 @@ Foam::scalar Foam::sphereCellOverlap::convexCellVolume
     scalar v = inside ? sphereVolume(R) : 0;
     for (const cellPlane* p = first; p != last; ++p)
     {
-        const scalar ds = p->offset - dot(p->normal, c);
+        const scalar ds = p->inside(c);
         if (ds >= R) continue;
         const scalar cap = faceValue
         (

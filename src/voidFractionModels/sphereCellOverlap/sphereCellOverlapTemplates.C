@@ -45,7 +45,7 @@ void Foam::sphereCellOverlap::forEachReachedCell
             for (label k = cellPlaneStart_[celli]; k < cellPlaneStart_[celli + 1]; ++k)
             {
                 const cellPlane& p = cellPlanes_[k];
-                if (p.face < nInternal && p.offset - sphereOverlap::dot(p.normal, c3) < R)
+                if (p.face < nInternal && p.inside(c3) < R)
                 {
                     enqueue(own[p.face] == celli ? nei[p.face] : own[p.face]);
                 }

@@ -22,10 +22,17 @@ after the seed's calibration study (its sections 4 and 5).
 4. Writes build/study/results.csv and the plots pareto.png, smoothness.png,
    optimalParameter.png, scaling.png; prints the README table for X = 3.
 
-usage: study.py [--quick] [--2d]
-       --quick: 3 repeats instead of 10, tiles up to 3^3; about a minute once
-                the packings exist
-       --2d:    only the 2D disk sample (its rows in results.csv replaced)
+1b. Friction (the seed's Table 4 b and c samples): L1.2b, L1.2c, L3b, L3c
+   with friction 0.1 and 0.3, compressed at a constant strain rate until
+   the pressure reaches P_STOP, so the friction sets the solid fraction
+   (medium, loose); every model over its parameter at X = 2..6 (full study
+   and --friction).
+
+usage: study.py [--quick] [--2d] [--friction]
+       --quick:    3 repeats instead of 10, tiles up to 3^3, no friction
+                   series; about a minute once the packings exist
+       --2d:       only the 2D disk sample (its rows in results.csv replaced)
+       --friction: only the friction series (its rows replaced)
 """
 import csv
 import math
@@ -39,6 +46,7 @@ from foamCase import ROOT, box_block_mesh, new_case, set_coupling, sh  # noqa: E
 
 QUICK = "--quick" in sys.argv
 ONLY_2D = "--2d" in sys.argv
+ONLY_FRICTION = "--friction" in sys.argv
 WORK = os.path.join(ROOT, "build", "study")
 CSV = os.path.join(WORK, "results.csv")
 REPEAT = 3 if QUICK else 10
@@ -67,13 +75,22 @@ SWEEPS_2D = [
 ]
 DISKS = "G2D"
 
+# the friction series: name, spheres, mean radius, d60/d10, friction; packed
+# to the pressure P_STOP (Pa): frictionless, that gives the solid fraction
+# 0.62 that L1.2a is compressed to
+FRICTION_SAMPLES = [("L1.2b", 8262, 1.17e-3, 1.2, 0.1), ("L1.2c", 8262, 1.17e-3, 1.2, 0.3),
+                    ("L3b", 22600, 1.48e-3, 3.0, 0.1), ("L3c", 22600, 1.48e-3, 3.0, 0.3)]
+P_STOP = 100
+
 
 def log(msg):
     print("[study] " + msg, flush=True)
 
 
-def make_packing(name, n, r_mean, cu, mu, phi=0.62, seed=10007):
-    """LIGGGHTS periodic packing; returns (dump path, box side)."""
+def make_packing(name, n, r_mean, cu, mu, phi=0.62, p_stop=0):
+    """LIGGGHTS periodic packing; returns (dump path, box side). With p_stop
+    (Pa) the box shrinks until that pressure instead of to the solid
+    fraction phi, so the friction sets the density."""
     out_dir = os.path.join(WORK, "packings")
     os.makedirs(out_dir, exist_ok=True)
     dump = os.path.join(out_dir, name + ".dump")
@@ -83,15 +100,26 @@ def make_packing(name, n, r_mean, cu, mu, phi=0.62, seed=10007):
     v_mean = sum(4 / 3 * math.pi * r ** 3 for r in radii) / 8
     L0 = (n * v_mean / 0.2) ** (1 / 3)
     L1 = (n * v_mean / phi) ** (1 / 3)
-    if os.path.isfile(dump):
-        return dump, L1
-    log("LIGGGHTS: packing %s (%d spheres, Cu %.1f, friction %.1f)" % (name, n, cu, mu))
-    var = {"N": n, "L0": L0, "L1": L1, "mu": mu, "seed": 86028157, "out": dump,
-           "skin": 0.3 * radii[0], "compressSteps": 20000, "relaxSteps": 10000}
-    var.update({"r%d" % (k + 1): r for k, r in enumerate(radii)})
-    args = " ".join("-var %s %s" % (k, v) for k, v in var.items())
-    sh("liggghts -in %s/in.periodicPacking %s -log %s.log -screen %s.screen" % (HERE, args, dump, dump), out_dir)
-    return dump, L1
+    if not os.path.isfile(dump):
+        log("LIGGGHTS: packing %s (%d spheres, Cu %.1f, friction %.1f%s)"
+            % (name, n, cu, mu, ", to %g Pa" % p_stop if p_stop else ""))
+        var = {"N": n, "L0": L0, "L1": L1, "mu": mu, "seed": 86028157, "out": dump,
+               "skin": 0.3 * radii[0], "compressSteps": 20000, "relaxSteps": 10000,
+               "pStop": p_stop, "rate": -0.5}
+        var.update({"r%d" % (k + 1): r for k, r in enumerate(radii)})
+        args = " ".join("-var %s %s" % (k, v) for k, v in var.items())
+        sh("liggghts -in %s/in.periodicPacking %s -log %s.log -screen %s.screen"
+           % (HERE, args, dump, dump), out_dir)
+    return dump, box_side(dump) if p_stop else L1
+
+
+def box_side(dump):
+    """Side of the (cubic) box of a LIGGGHTS text dump."""
+    with open(dump) as f:
+        lines = f.read(4096).splitlines()
+    k = lines.index(next(l for l in lines if l.startswith("ITEM: BOX BOUNDS")))
+    lo, hi = (float(v) for v in lines[k + 1].split()[:2])
+    return hi - lo
 
 
 def make_disk_packing(n=10000, phi=0.82, seed=5):
@@ -222,6 +250,54 @@ def sweep_X(name, dump, L, r_max, sweeps, two_d=False):
         run_case("%s-X%g" % (name, X), dump, L, X, r_max, sweep_runs(sweeps), two_d=two_d)
 
 
+def sphere_study(name, dump, L):
+    """Log a 3D sample's solid fraction and grading, sweep every model over
+    X; returns (dump, side, largest radius, count)."""
+    centres, radii = read_dump(dump)
+    phi = sum(4 / 3 * math.pi * r ** 3 for r in radii) / L ** 3
+    ds = sorted(2 * r for r in radii)
+    log("%s: %d spheres, solid fraction %.3f, d60/d10 %.3f" %
+        (name, len(radii), phi, ds[int(0.6 * len(ds))] / ds[int(0.1 * len(ds))]))
+    sweep_X(name, dump, L, max(radii), SWEEPS)
+    return dump, L, max(radii), len(radii)
+
+
+def friction_study():
+    """The seed's b and c samples: the friction sets the solid fraction."""
+    for name, count, r_mean, cu, mu in FRICTION_SAMPLES:
+        sphere_study(name, *make_packing(name, count, r_mean, cu, mu, p_stop=P_STOP))
+
+
+def friction_table(rows):
+    """Error (%) of each model at its default against analytical, X near 3,
+    for the frictionless samples and their friction series."""
+    names = [n for n in ("L1.2a", "L1.2b", "L1.2c", "L3a", "L3b", "L3c")
+             if any(r["sample"] == n for r in rows)]
+    out = ["| model | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
+    for model, key, values in SWEEPS:
+        run = model if key is None else "%s_%s" % (model, values[0])
+        cells = []
+        for n in names:
+            X = nearest_X(rows, n, 3)
+            r = next((r for r in rows if r["sample"] == n and r["run"] == run and r["nProcs"] == "1"
+                      and round(float(r["X"]), 2) == X), None)
+            cells.append("%.3g (X %.2f)" % (float(r["error_percent"]), X) if r else "-")
+        out.append("| %s | %s |" % (model, " | ".join(cells)))
+    return "\n".join(out)
+
+
+def replace_rows(samples):
+    """Drop the CSV rows of the given samples (they are about to be rerun)."""
+    kept = [r for r in load() if r["sample"] not in samples] if os.path.exists(CSV) else []
+    if kept:
+        with open(CSV, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(kept[0].keys()), lineterminator="\n")
+            w.writeheader()
+            w.writerows(kept)
+    elif os.path.exists(CSV):
+        os.remove(CSV)
+
+
 def default_runs():
     return [("%s_%s" % (m, vals[0]) if k else m, m, k, vals[0]) for m, k, vals in SWEEPS]
 
@@ -346,17 +422,15 @@ def table(rows, X3, sample_name="L1.2a", sweeps=SWEEPS):
 def main():
     os.makedirs(WORK, exist_ok=True)
     if ONLY_2D:
-        kept = [r for r in load() if r["sample"] != DISKS] if os.path.exists(CSV) else []
-        if kept:
-            with open(CSV, "w", newline="") as f:
-                w = csv.DictWriter(f, fieldnames=list(kept[0].keys()))
-                w.writeheader()
-                w.writerows(kept)
-        elif os.path.exists(CSV):
-            os.remove(CSV)
+        replace_rows({DISKS})
         disk_study()
         rows = load()
         print(table(rows, nearest_X(rows, DISKS, 3), DISKS, SWEEPS_2D))
+        return
+    if ONLY_FRICTION:
+        replace_rows({n for n, *_ in FRICTION_SAMPLES})
+        friction_study()
+        print(friction_table(load()))
         return
     if os.path.exists(CSV):
         os.remove(CSV)
@@ -364,15 +438,7 @@ def main():
     samples = [("L1.2a", 8262, 1.17e-3, 1.2)] + ([] if QUICK else [("L3a", 22600, 1.48e-3, 3.0)])
     packed = {}
     for name, count, r_mean, cu in samples:
-        dump, L = make_packing(name, count, r_mean, cu, 0.0)
-        centres, radii = read_dump(dump)
-        r_max = max(radii)
-        packed[name] = (dump, L, r_max, len(radii))
-        phi = sum(4 / 3 * math.pi * r ** 3 for r in radii) / L ** 3
-        ds = sorted(2 * r for r in radii)
-        log("%s: %d spheres, solid fraction %.3f, d60/d10 %.3f" %
-            (name, len(radii), phi, ds[int(0.6 * len(ds))] / ds[int(0.1 * len(ds))]))
-        sweep_X(name, dump, L, r_max, SWEEPS)
+        packed[name] = sphere_study(name, *make_packing(name, count, r_mean, cu, 0.0))
     dump, L, r_max, count = packed["L1.2a"]
     log("X = 3 on 2 MPI ranks")
     run_case("L1.2a-X3-np2", dump, L, 3, r_max, default_runs(), nprocs=2)
@@ -380,6 +446,8 @@ def main():
         path = tile(dump, L, k)
         log("scale: %d particles" % (count * k ** 3))
         run_case("tile%d" % k, path, k * L, 3, r_max, default_runs(), sample="tile%d" % k)
+    if not QUICK:
+        friction_study()
     disk_study()
     rows = load()
     X3 = plots(rows)
@@ -387,6 +455,7 @@ def main():
     print(table(rows, nearest_X(rows, DISKS, 3), DISKS, SWEEPS_2D))
     if "L3a" in packed:
         print(table(rows, nearest_X(rows, "L3a", 3), "L3a"))
+        print(friction_table(rows))
     # peak memory of a whole benchmark process (dump, mesh, every model in
     # turn) against particle count: the slope is the memory per particle
     peaks = sorted({(int(r["nParticles"]), max(float(q["peak_memory_MB"]) for q in rows if q["sample"] == r["sample"]))

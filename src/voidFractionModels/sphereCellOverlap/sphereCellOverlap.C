@@ -78,26 +78,25 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
          && mag(bb.volume() - mesh.V()[celli]) < 1e-10*mesh.V()[celli];
         cellPlaneStart_[celli + 1] = cellPlaneStart_[celli];
         if (isBox_[celli]) continue;
-        // convex: every point of the cell on the inner side of every face
+        // the outward planes, kept when the cell is convex: every point of
+        // the cell on the inner side of every (planar) face
+        const label first = planes.size();
         const labelList cellPoints(c.labels(faces));
         const scalar tol = 1e-10*bb.mag();
         bool convex = true;
         for (const label facei : c)
         {
             const scalar sign = mesh.faceOwner()[facei] == celli ? 1 : -1;
+            const facePlane& fp = facePlanes_[facei];
+            const cellPlane plane{sign*fp.normal, sign*fp.offset, facei};
             convex = convex && planarFace_[facei];
             for (const label pointi : cellPoints)
             {
-                convex = convex && sign*((pts[pointi] - Cf[facei]) & Sf[facei]) <= tol*mag(Sf[facei]);
+                convex = convex && plane.inside(toVec3(pts[pointi])) >= -tol;
             }
+            planes.append(plane);
         }
-        if (!convex) continue;
-        for (const label facei : c)
-        {
-            const scalar sign = mesh.faceOwner()[facei] == celli ? 1 : -1;
-            const facePlane& fp = facePlanes_[facei];
-            planes.append({sign*fp.normal, sign*fp.offset, facei});
-        }
+        if (!convex) planes.setSize(first);
         cellPlaneStart_[celli + 1] = planes.size();
     }
     cellPlanes_.transfer(planes);

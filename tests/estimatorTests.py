@@ -145,9 +145,10 @@ def test_vanishing_bandwidth():
 
 
 def gaussian_reference(centres, V, c, b, rc, walls):
-    """Seed Eq. 8 evaluated independently: V_cell exp(-|x - c|^2/b^2) per
-    cell, cube cut-off rc, plus mirror images across the given axis planes
-    (axis, position) within rc, normalised."""
+    """Seed Eq. 8 evaluated independently: V_cell exp(-|x - c|^2/b^2) in
+    the cells whose centres lie within rc of c, plus there the Gaussians of
+    the mirror images across the given axis planes (axis, position) within
+    rc, normalised."""
     images = [tuple(c)]
     for axis, pos in walls:
         if abs(c[axis] - pos) < rc:
@@ -155,10 +156,9 @@ def gaussian_reference(centres, V, c, b, rc, walls):
     w = []
     for x, v in zip(centres, V):
         s = 0.0
-        for im in images:
-            d = [x[k] - im[k] for k in range(3)]
-            if all(abs(t) <= rc for t in d):
-                s += math.exp(-(d[0] ** 2 + d[1] ** 2 + d[2] ** 2) / b ** 2)
+        if sum((x[k] - c[k]) ** 2 for k in range(3)) <= rc * rc:
+            for im in images:
+                s += math.exp(-sum((x[k] - im[k]) ** 2 for k in range(3)) / b ** 2)
         w.append(v * s)
     total = sum(w)
     return [x / total for x in w]

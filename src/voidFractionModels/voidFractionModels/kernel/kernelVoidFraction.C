@@ -167,6 +167,7 @@ void Foam::voidFractionModels::kernel::findImages
     images_.append(c);
     imageWall_.clear();
     imageWall_.append(-1);
+    nMirrors_ = 0;
     if (celli >= 0 && rc <= wallClearance_[celli]) return;
     label nNear = 0;
     forAll(walls_, w)
@@ -185,75 +186,66 @@ void Foam::voidFractionModels::kernel::findImages
             imageWall_.append(w);
         }
     }
+    for (label i = 1; i < images_.size(); ++i)
+    {
+        const vector shift = images_[i] - c;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if
+            (
+                shift[(d + 1) % 3] == 0 && shift[(d + 2) % 3] == 0
+             && nMirrors_[d] < 2
+            )
+            {
+                mirrors_[d][nMirrors_[d]++] = images_[i][d];
+            }
+        }
+    }
 }
 
 
 void Foam::voidFractionModels::kernel::axisFactors
 (
     const direction d,
-    const point& c,
+    const scalar x,
     const scalar b,
     const scalar rc
 )
 {
     const scalarList& g = locator_.gridPlanes(d);
     const scalarList& xc = gridCentres_[d];
-    const label n = xc.size();
 
-    // cells [ia, ib) whose centres lie within rc of xm: the interval
-    // holding each end of the reach (arithmetic on uniform planes), then
-    // that cell's centre decides whether it is in
-    auto reach = [&](const scalar xm, label& ia, label& ib)
+    // cells [first, end) whose centres lie within rc of x: the interval
+    // holding the low end of the reach, then the centres decide
+    label first = 0, end = 0;
+    if (x + rc >= g.first() && x - rc <= g.last())
     {
-        ia = ib = 0;
-        if (xm + rc < g.first() || xm - rc > g.last()) return;
-        const scalar from = max(xm - rc, g.first());
-        const scalar to = min(xm + rc, g.last());
-        ia = locator_.interval(d, from);
-        ia += (xc[ia] < from);
-        ib = locator_.interval(d, to);
-        ib += (xc[ib] <= to);
-        ib = max(ib, ia);
-    };
-
-    // the particle and the images that differ from it in direction d only
-    label lo = n, hi = 0;
-    label nRanges = 0;
-    for (const point& image : images_)
-    {
-        if
-        (
-            (d == 0 || image[0] == c[0])
-         && (d == 1 || image[1] == c[1])
-         && (d == 2 || image[2] == c[2])
-        )
-        {
-            axisRange& R = ranges_[nRanges];
-            R.x = image[d];
-            reach(R.x, R.first, R.end);
-            if (R.end > R.first)
-            {
-                lo = min(lo, R.first);
-                hi = max(hi, R.end);
-                ++nRanges;
-            }
-        }
+        const scalar from = max(x - rc, g.first());
+        const scalar to = min(x + rc, g.last());
+        first = locator_.interval(d, from);
+        first += (xc[first] < from);
+        end = first;
+        while (end < xc.size() && xc[end] <= to) ++end;
     }
-    firstIndex_[d] = lo;
-    DynamicList<scalar>& f = factor_[d];
-    f.setSize(max(hi - lo, 0));
-    const scalarList& h = gridWidths_[d];
+    firstIndex_[d] = first;
+    const label n = end - first;
+    factor_[d].setSize(n);
+    distSqr_[d].setSize(n);
+    scalar* f = factor_[d].data();
+    scalar* dd = distSqr_[d].data();
+    const scalar* h = gridWidths_[d].cdata() + first;
+    const scalar* xi = xc.cdata() + first;
     const scalar invB2 = 1/sqr(b);
-    if (nRanges > 1) f = 0;
-    scalar* fi = f.data() - lo;
-    for (label k = 0; k < nRanges; ++k)
+    const FixedList<scalar, 2>& m = mirrors_[d];
+    for (label k = 0; k < n; ++k)
     {
-        const axisRange& R = ranges_[k];
-        for (label i = R.first; i < R.end; ++i)
+        dd[k] = sqr(xi[k] - x);
+        scalar gauss = exp(-dd[k]*invB2);
+        for (label j = 0; j < nMirrors_[d]; ++j)
         {
-            const scalar w = h[i]*exp(-sqr(xc[i] - R.x)*invB2);
-            fi[i] = (nRanges == 1) ? w : fi[i] + w;
+            gauss += exp(-sqr(xi[k] - m[j])*invB2);
         }
+        f[k] = h[k]*gauss;
     }
 }
 
@@ -266,39 +258,51 @@ void Foam::voidFractionModels::kernel::gridWeights
     const scalar rc
 )
 {
-    for (direction d = 0; d < 3; ++d) axisFactors(d, c, b, rc);
+    for (direction d = 0; d < 3; ++d) axisFactors(d, c[d], b, rc);
     const scalarList& fx = factor_[0];
     const scalarList& fy = factor_[1];
     const scalarList& fz = factor_[2];
-    const label n = fx.size()*fy.size()*fz.size();
+    const scalarList& dx = distSqr_[0];
+    const scalarList& dy = distSqr_[1];
+    const scalarList& dz = distSqr_[2];
 
-    // the cell volume is the product of the widths: separable, like the
-    // Gaussian, so the row sum is the product of the axis sums
-    sums_[p] = sum(fx)*sum(fy)*sum(fz);
-    if (n == 0)
-    {
-        if (centreCells_[p] >= 0) weights_.append(centreCells_[p], 0);
-        return;
-    }
-    const label k0 = weights_.extend(n);
+    // room for the whole box of cells; the ball keeps about half of it
+    const label k0 = weights_.extend(fx.size()*fy.size()*fz.size());
     label* cells = weights_.cellsData() + k0;
     scalar* fractions = weights_.fractionsData() + k0;
+    const scalar rc2 = sqr(rc);
+    scalar sum = 0;
+    label n = 0;
     forAll(fz, kz)
     {
         forAll(fy, ky)
         {
+            // the squared distances along x fall, then rise: the cells in
+            // the ball are one run [lo, hi) of the row
+            const scalar left = rc2 - (dy[ky] + dz[kz]);
+            label lo = 0, hi = dx.size();
+            while (lo < hi && dx[lo] > left) ++lo;
+            while (hi > lo && dx[hi - 1] > left) --hi;
+            if (lo == hi) continue;
             const scalar fyz = fy[ky]*fz[kz];
             const label* row = locator_.gridRow
             (
                 firstIndex_[0], firstIndex_[1] + ky, firstIndex_[2] + kz
             );
-            forAll(fx, kx)
+            for (label kx = lo; kx < hi; ++kx)
             {
-                *cells++ = row[kx];
-                *fractions++ = fx[kx]*fyz;
+                cells[n] = row[kx];
+                fractions[n] = fx[kx]*fyz;
+                sum += fractions[n++];
             }
         }
     }
+
+    // nothing positive here: the row is the centre cell alone, where the
+    // fallback of distribute finds it
+    weights_.truncateEntries(sum > 0 ? k0 + n : k0);
+    if (sum == 0 && centreCells_[p] >= 0) weights_.append(centreCells_[p], 0);
+    sums_[p] = sum;
 }
 
 
@@ -315,30 +319,28 @@ void Foam::voidFractionModels::kernel::walkWeights
     if (seed >= 0) weights_.append(seed, 0);
     const scalarField& V = mesh_.V();
     const vectorField& C = mesh_.C();
+    const scalar rc2 = sqr(rc);
+    const scalar invB2 = 1/sqr(b);
     scalar sum = 0;
-    findSeeds(seed, c, sqrt(3.0)*rc);
+    findSeeds(seed, c, rc);
     overlap_.forEachReachedCell
     (
         c, rc, seeds_,
         [&](const label celli)
         {
             const point& x = C[celli];
+            if (magSqr(x - c) > rc2) return true;
             scalar w = 0;
             for (const point& image : images_)
             {
-                const vector d = x - image;
-                if (mag(d.x()) <= rc && mag(d.y()) <= rc && mag(d.z()) <= rc)
-                {
-                    w += exp(-magSqr(d)/sqr(b));
-                }
+                w += exp(-magSqr(x - image)*invB2);
             }
             w *= V[celli];
             sum += w;
             if (celli == seed) weights_.setFraction(k0, w);
-            else if (w > 0) weights_.append(celli, w);
+            else weights_.append(celli, w);
             return true;
-        },
-        true
+        }
     );
     sums_[p] = sum;
 }
@@ -363,6 +365,17 @@ void Foam::voidFractionModels::kernel::distribute
     }
     combineOverGroup(b_, maxEqOp<scalar>());
 
+    // a kernel that reaches no cell centre (bandwidth far below the cell
+    // size) leaves the particle in its cell
+    auto normalise = [&](const label p)
+    {
+        if (sums_[p] > 0) weights_.scale(p, 1/sums_[p]);
+        else if (centreCells_[p] >= 0) weights_.setFraction(weights_.begin(p), 1);
+    };
+
+    // whole particles are normalised while their row is in cache;
+    // otherwise over all ranks and images once all rows are made
+    const bool whole = entriesAreWhole(n);
     forAll(x, p)
     {
         sums_[p] = 0;
@@ -374,14 +387,11 @@ void Foam::voidFractionModels::kernel::distribute
             else walkWeights(p, x[p], b_[p], rc);
         }
         weights_.endParticle();
+        if (whole) normalise(p);
     }
-
-    // normalise over all ranks and images; a kernel that reaches no cell
-    // centre (bandwidth far below the cell size) leaves it in its cell
-    combineOverGroup(sums_, plusEqOp<scalar>());
-    forAll(x, p)
+    if (!whole)
     {
-        if (sums_[p] > 0) weights_.scale(p, 1/sums_[p]);
-        else if (centreCells_[p] >= 0) weights_.setFraction(weights_.begin(p), 1);
+        combineOverGroup(sums_, plusEqOp<scalar>());
+        forAll(x, p) normalise(p);
     }
 }

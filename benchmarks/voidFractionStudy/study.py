@@ -28,11 +28,18 @@ after the seed's calibration study (its sections 4 and 5).
    (medium, loose); every model over its parameter at X = 2..6 (full study
    and --friction).
 
-usage: study.py [--quick] [--2d] [--friction]
-       --quick:    3 repeats instead of 10, tiles up to 3^3, no friction
-                   series; about a minute once the packings exist
+1c. Bimodal (the seed's Table 5): B2a to B2d (size ratio 2, fines 20 to 35 %
+   by mass), B6a and B10a (ratio 6 and 10, fines 20 %), frictionless,
+   compressed to P_STOP in boxes wide enough for two cells per side at X = 6
+   (B2), three at X = 3 (B6), two at X = 2 (B10, the seed's box); every
+   model over its parameter (full study and --bimodal).
+
+usage: study.py [--quick] [--2d] [--friction] [--bimodal]
+       --quick:    3 repeats instead of 10, tiles up to 3^3, no friction or
+                   bimodal series; about a minute once the packings exist
        --2d:       only the 2D disk sample (its rows in results.csv replaced)
        --friction: only the friction series (its rows replaced)
+       --bimodal:  only the bimodal samples (their rows replaced)
 """
 import csv
 import math
@@ -47,6 +54,7 @@ from foamCase import ROOT, box_block_mesh, new_case, set_coupling, sh  # noqa: E
 QUICK = "--quick" in sys.argv
 ONLY_2D = "--2d" in sys.argv
 ONLY_FRICTION = "--friction" in sys.argv
+ONLY_BIMODAL = "--bimodal" in sys.argv
 WORK = os.path.join(ROOT, "build", "study")
 CSV = os.path.join(WORK, "results.csv")
 REPEAT = 3 if QUICK else 10
@@ -82,35 +90,72 @@ FRICTION_SAMPLES = [("L1.2b", 8262, 1.17e-3, 1.2, 0.1), ("L1.2c", 8262, 1.17e-3,
                     ("L3b", 22600, 1.48e-3, 3.0, 0.1), ("L3c", 22600, 1.48e-3, 3.0, 0.3)]
 P_STOP = 100
 
+# the seed's Table 5 bimodal samples: name, d_coarse/d_fine, fines content by
+# mass, box width in coarse diameters, solid fraction expected. The seed's
+# boxes are 4.3 to 4.9 coarse diameters wide (one or two cells at X >= 2);
+# ours hold two cells or more at X = 6 (B2) and three at X = 3 (B6: fines
+# are 54 per coarse sphere); B10a (250 fines per coarse sphere) keeps the
+# seed's 4.3 and so its two cells per side at X = 2 only. The seed's table
+# fits these with d_coarse = 1 mm (its particle counts and mean diameters
+# give solid fractions of 0.69 for B2a and 0.84 for B6a with the fines
+# counted by mass, 0.55 and 0.31 by number).
+BIMODAL_SAMPLES = [("B2a", 2, 0.20, 12, 0.66), ("B2b", 2, 0.25, 12, 0.66), ("B2c", 2, 0.30, 12, 0.66),
+                   ("B2d", 2, 0.35, 12, 0.66), ("B6a", 6, 0.20, 9, 0.72), ("B10a", 10, 0.20, 4.3, 0.72)]
+R_FINE = 1e-3
+
 
 def log(msg):
     print("[study] " + msg, flush=True)
 
 
 def make_packing(name, n, r_mean, cu, mu, phi=0.62, p_stop=0):
-    """LIGGGHTS periodic packing; returns (dump path, box side). With p_stop
-    (Pa) the box shrinks until that pressure instead of to the solid
+    """LIGGGHTS periodic packing, sizes uniform by number with d60/d10 = cu
+    (eight equally numerous classes); returns (dump path, box side). With
+    p_stop (Pa) the box shrinks until that pressure instead of to the solid
     fraction phi, so the friction sets the density."""
-    out_dir = os.path.join(WORK, "packings")
-    os.makedirs(out_dir, exist_ok=True)
-    dump = os.path.join(out_dir, name + ".dump")
     dmin = 2 * r_mean / (1 + 0.5 * (cu - 1) / (0.6 - 0.1 * cu))
     spread = (cu - 1) / (0.6 - 0.1 * cu) * dmin
     radii = [0.5 * (dmin + (k + 0.5) / 8 * spread) for k in range(8)]
-    v_mean = sum(4 / 3 * math.pi * r ** 3 for r in radii) / 8
+    log_name = "%d spheres, Cu %.1f, friction %.1f" % (n, cu, mu)
+    return pack_classes(name, n, radii, [0.125] * 8, mu, phi, p_stop, log_name)
+
+
+def pack_classes(name, n, radii, weights, mu, phi, p_stop, what):
+    """LIGGGHTS periodic packing of n spheres in eight size classes (radii,
+    number fractions); returns (dump path, box side)."""
+    out_dir = os.path.join(WORK, "packings")
+    os.makedirs(out_dir, exist_ok=True)
+    dump = os.path.join(out_dir, name + ".dump")
+    v_mean = sum(w * 4 / 3 * math.pi * r ** 3 for r, w in zip(radii, weights))
     L0 = (n * v_mean / 0.2) ** (1 / 3)
     L1 = (n * v_mean / phi) ** (1 / 3)
     if not os.path.isfile(dump):
-        log("LIGGGHTS: packing %s (%d spheres, Cu %.1f, friction %.1f%s)"
-            % (name, n, cu, mu, ", to %g Pa" % p_stop if p_stop else ""))
+        log("LIGGGHTS: packing %s (%s%s)" % (name, what, ", to %g Pa" % p_stop if p_stop else ""))
         var = {"N": n, "L0": L0, "L1": L1, "mu": mu, "seed": 86028157, "out": dump,
-               "skin": 0.3 * radii[0], "compressSteps": 20000, "relaxSteps": 10000,
+               "skin": 0.3 * min(radii), "compressSteps": 20000, "relaxSteps": 10000,
                "pStop": p_stop, "rate": -0.5}
         var.update({"r%d" % (k + 1): r for k, r in enumerate(radii)})
-        args = " ".join("-var %s %s" % (k, v) for k, v in var.items())
+        var.update({"w%d" % (k + 1): w for k, w in enumerate(weights)})
+        args = " ".join("-var %s %r" % (k, v) for k, v in var.items())
         sh("liggghts -in %s/in.periodicPacking %s -log %s.log -screen %s.screen"
            % (HERE, args, dump, dump), out_dir)
     return dump, box_side(dump) if p_stop else L1
+
+
+def make_bimodal_packing(name, ratio, fines, width, phi):
+    """The seed's Table 5 samples: coarse and fine spheres, size ratio
+    d_coarse/d_fine, fines content by mass, frictionless, compressed to
+    P_STOP in a box about width coarse diameters wide (phi: the solid
+    fraction expected, for the particle count)."""
+    fines_per_coarse = fines / (1 - fines) * ratio ** 3
+    n_fine = fines_per_coarse / (1 + fines_per_coarse)
+    r_coarse = ratio * R_FINE
+    v_coarse = 4 / 3 * math.pi * r_coarse ** 3
+    n_coarse = phi * (1 - fines) * (width * 2 * r_coarse) ** 3 / v_coarse
+    n = round(n_coarse * (1 + fines_per_coarse))
+    what = "%d spheres, d ratio %g, fines %d %% by mass" % (n, ratio, round(100 * fines))
+    return pack_classes(name, n, [R_FINE] * 4 + [r_coarse] * 4,
+                        [n_fine / 4] * 4 + [(1 - n_fine) / 4] * 4, 0.0, phi, P_STOP, what)
 
 
 def box_side(dump):
@@ -241,8 +286,8 @@ def sweep_X(name, dump, L, r_max, sweeps, two_d=False):
     lands near the target."""
     done = set()
     for X in (2, 2.5, 3, 4, 5, 6):
-        n = max(1, round(L / (X * 2 * r_max)))
-        if n in done:
+        n = round(L / (X * 2 * r_max))
+        if n in done or n < 2:
             continue
         done.add(n)
         log("%s, X = %.2f (%d^%d cells): every model over its parameter"
@@ -256,8 +301,12 @@ def sphere_study(name, dump, L):
     centres, radii = read_dump(dump)
     phi = sum(4 / 3 * math.pi * r ** 3 for r in radii) / L ** 3
     ds = sorted(2 * r for r in radii)
-    log("%s: %d spheres, solid fraction %.3f, d60/d10 %.3f" %
-        (name, len(radii), phi, ds[int(0.6 * len(ds))] / ds[int(0.1 * len(ds))]))
+    if ds[-1] > 1.5 * ds[0] and sum(d < 1.01 * ds[0] for d in ds) + sum(d > 0.99 * ds[-1] for d in ds) == len(ds):
+        fines = sum(d ** 3 for d in ds if d < 1.01 * ds[0]) / sum(d ** 3 for d in ds)
+        grading = "d ratio %.2f, fines %.3f by mass" % (ds[-1] / ds[0], fines)
+    else:
+        grading = "d60/d10 %.3f" % (ds[int(0.6 * len(ds))] / ds[int(0.1 * len(ds))])
+    log("%s: %d spheres, solid fraction %.3f, %s" % (name, len(radii), phi, grading))
     sweep_X(name, dump, L, max(radii), SWEEPS)
     return dump, L, max(radii), len(radii)
 
@@ -268,11 +317,18 @@ def friction_study():
         sphere_study(name, *make_packing(name, count, r_mean, cu, mu, p_stop=P_STOP))
 
 
-def friction_table(rows):
+def bimodal_study():
+    """The seed's bimodal samples, every model over its parameter at the X
+    that leave two cells per side or more."""
+    for name, ratio, fines, width, phi in BIMODAL_SAMPLES:
+        sphere_study(name, *make_bimodal_packing(name, ratio, fines, width, phi))
+
+
+def friction_table(rows, names=("L1.2a", "L1.2b", "L1.2c", "L3a", "L3b", "L3c")):
     """Error (%) of each model at its default against analytical, X near 3,
-    for the frictionless samples and their friction series."""
-    names = [n for n in ("L1.2a", "L1.2b", "L1.2c", "L3a", "L3b", "L3c")
-             if any(r["sample"] == n for r in rows)]
+    for the given samples (default: the frictionless samples and their
+    friction series)."""
+    names = [n for n in names if any(r["sample"] == n for r in rows)]
     out = ["| model | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
     for model, key, values in SWEEPS:
         run = model if key is None else "%s_%s" % (model, values[0])
@@ -432,6 +488,11 @@ def main():
         friction_study()
         print(friction_table(load()))
         return
+    if ONLY_BIMODAL:
+        replace_rows({n for n, *_ in BIMODAL_SAMPLES})
+        bimodal_study()
+        print(friction_table(load(), [n for n, *_ in BIMODAL_SAMPLES]))
+        return
     if os.path.exists(CSV):
         os.remove(CSV)
     # the seed's Table 4 samples L1.2a and (full study) L3a, frictionless
@@ -448,6 +509,7 @@ def main():
         run_case("tile%d" % k, path, k * L, 3, r_max, default_runs(), sample="tile%d" % k)
     if not QUICK:
         friction_study()
+        bimodal_study()
     disk_study()
     rows = load()
     X3 = plots(rows)
@@ -456,6 +518,7 @@ def main():
     if "L3a" in packed:
         print(table(rows, nearest_X(rows, "L3a", 3), "L3a"))
         print(friction_table(rows))
+        print(friction_table(rows, [n for n, *_ in BIMODAL_SAMPLES]))
     # peak memory of a whole benchmark process (dump, mesh, every model in
     # turn) against particle count: the slope is the memory per particle
     peaks = sorted({(int(r["nParticles"]), max(float(q["peak_memory_MB"]) for q in rows if q["sample"] == r["sample"]))

@@ -17,8 +17,9 @@ after the seed's calibration study (its sections 4 and 5).
    10000gr12p5fb0a) in a periodic square to an area fraction of 0.82; a
    one-cell-thick periodic mesh with empty front and back, twoDimensional
    true, every model over its parameter around the seed's 2D calibrations.
-3. Scale: the periodic sample tiled k^3 times (8e3 to 1e6 particles), every
-   model at its defaults, X = 3: time per particle against particle count.
+3. Scale: 1,000 spheres of the same grading, then the periodic sample tiled
+   k^3 times (8e3 to 1e6 particles), every model at its defaults, X = 3:
+   time per particle against particle count.
 4. Writes build/study/results.csv and the plots pareto.png, smoothness.png,
    optimalParameter.png, scaling.png; prints the README table for X = 3.
 
@@ -34,12 +35,20 @@ after the seed's calibration study (its sections 4 and 5).
    (B2), three at X = 3 (B6), two at X = 2 (B10, the seed's box); every
    model over its parameter (full study and --bimodal).
 
-usage: study.py [--quick] [--2d] [--friction] [--bimodal]
-       --quick:    3 repeats instead of 10, tiles up to 3^3, no friction or
-                   bimodal series; about a minute once the packings exist
+1d. Cu = 6 (the seed's L6a, b, c): 59,183 spheres whose number fraction is
+   linear in log d (sizes uniform by number cannot reach d60/d10 = 6),
+   friction 0, 0.1, 0.3, compressed to P_STOP; every model over its
+   parameter over X (full study and --cu6).
+
+usage: study.py [--quick] [--2d] [--friction] [--bimodal] [--cu6] [--scale]
+       --quick:    3 repeats instead of 10, tiles up to 3^3, no friction,
+                   Cu = 6 or bimodal series; about a minute once the
+                   packings exist
        --2d:       only the 2D disk sample (its rows in results.csv replaced)
        --friction: only the friction series (its rows replaced)
        --bimodal:  only the bimodal samples (their rows replaced)
+       --cu6:      only the Cu = 6 samples (their rows replaced)
+       --scale:    only the scale series (its rows replaced)
 """
 import csv
 import math
@@ -55,6 +64,8 @@ QUICK = "--quick" in sys.argv
 ONLY_2D = "--2d" in sys.argv
 ONLY_FRICTION = "--friction" in sys.argv
 ONLY_BIMODAL = "--bimodal" in sys.argv
+ONLY_CU6 = "--cu6" in sys.argv
+ONLY_SCALE = "--scale" in sys.argv
 WORK = os.path.join(ROOT, "build", "study")
 CSV = os.path.join(WORK, "results.csv")
 REPEAT = 3 if QUICK else 10
@@ -89,6 +100,12 @@ DISKS = "G2D"
 FRICTION_SAMPLES = [("L1.2b", 8262, 1.17e-3, 1.2, 0.1), ("L1.2c", 8262, 1.17e-3, 1.2, 0.3),
                     ("L3b", 22600, 1.48e-3, 3.0, 0.1), ("L3c", 22600, 1.48e-3, 3.0, 0.3)]
 P_STOP = 100
+
+# the seed's Cu = 6 samples (L6a, b, c: 59,183 spheres, friction 0, 0.1,
+# 0.3): sizes uniform by number cannot reach d60/d10 = 6, a number fraction
+# linear in log d can (d_max/d_min 23 with eight classes); smallest radius
+CU6_SAMPLES = [("L6a", 59183, 0.5e-3, 6.0, 0.0), ("L6b", 59183, 0.5e-3, 6.0, 0.1),
+               ("L6c", 59183, 0.5e-3, 6.0, 0.3)]
 
 # the seed's Table 5 bimodal samples: name, d_coarse/d_fine, fines content by
 # mass, box width in coarse diameters, solid fraction expected. The seed's
@@ -140,6 +157,16 @@ def pack_classes(name, n, radii, weights, mu, phi, p_stop, what):
         sh("liggghts -in %s/in.periodicPacking %s -log %s.log -screen %s.screen"
            % (HERE, args, dump, dump), out_dir)
     return dump, box_side(dump) if p_stop else L1
+
+
+def make_log_packing(name, n, r_min, cu, mu):
+    """LIGGGHTS periodic packing whose number fraction is linear in log d
+    (eight equally numerous classes, d_max/d_min = cu^(7/4)): d60/d10 = cu
+    for any cu, where sizes uniform by number reach 6 only as the smallest
+    goes to zero. Compressed to P_STOP; returns (dump path, box side)."""
+    radii = [r_min * cu ** (2 * k / 8) for k in range(8)]
+    what = "%d spheres, Cu %g, number linear in log d, friction %.1f" % (n, cu, mu)
+    return pack_classes(name, n, radii, [0.125] * 8, mu, 0.62, P_STOP, what)
 
 
 def make_bimodal_packing(name, ratio, fines, width, phi):
@@ -317,6 +344,25 @@ def friction_study():
         sphere_study(name, *make_packing(name, count, r_mean, cu, mu, p_stop=P_STOP))
 
 
+def scale_study(dump, L, r_max, count):
+    """Time per particle against particle count, X = 3, defaults: 1,000
+    spheres of L1.2a's grading packed on their own (a tile cannot be smaller
+    than the sample), then L1.2a tiled k^3 times."""
+    small, L_small = make_packing("L1.2-1k", 1000, 1.17e-3, 1.2, 0.0)
+    log("scale: 1000 particles")
+    run_case("tile1k", small, L_small, 3, r_max, default_runs(), sample="tile1k")
+    for k in TILES:
+        path = tile(dump, L, k)
+        log("scale: %d particles" % (count * k ** 3))
+        run_case("tile%d" % k, path, k * L, 3, r_max, default_runs(), sample="tile%d" % k)
+
+
+def cu6_study():
+    """The seed's Cu = 6 samples, every model over its parameter over X."""
+    for name, count, r_min, cu, mu in CU6_SAMPLES:
+        sphere_study(name, *make_log_packing(name, count, r_min, cu, mu))
+
+
 def bimodal_study():
     """The seed's bimodal samples, every model over its parameter at the X
     that leave two cells per side or more."""
@@ -441,7 +487,7 @@ def plots(rows):
     ax.set_yscale("log")
     ax.set_xlabel("particles")
     ax.set_ylabel("time per particle per call (s)")
-    ax.set_title("L1.2a tiled k^3 times, X = 3, defaults: flat = linear cost")
+    ax.set_title("1,000 spheres, then L1.2a tiled k^3 times; X = 3, defaults: flat = linear cost", fontsize=10)
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(WORK, "scaling.png"), dpi=110)
@@ -488,6 +534,17 @@ def main():
         friction_study()
         print(friction_table(load()))
         return
+    if ONLY_SCALE:
+        replace_rows({r["sample"] for r in load() if r["sample"].startswith("tile")})
+        dump, L = make_packing("L1.2a", 8262, 1.17e-3, 1.2, 0.0)
+        centres, radii = read_dump(dump)
+        scale_study(dump, L, max(radii), len(radii))
+        return
+    if ONLY_CU6:
+        replace_rows({n for n, *_ in CU6_SAMPLES})
+        cu6_study()
+        print(friction_table(load(), [n for n, *_ in CU6_SAMPLES]))
+        return
     if ONLY_BIMODAL:
         replace_rows({n for n, *_ in BIMODAL_SAMPLES})
         bimodal_study()
@@ -503,12 +560,10 @@ def main():
     dump, L, r_max, count = packed["L1.2a"]
     log("X = 3 on 2 MPI ranks")
     run_case("L1.2a-X3-np2", dump, L, 3, r_max, default_runs(), nprocs=2)
-    for k in TILES:
-        path = tile(dump, L, k)
-        log("scale: %d particles" % (count * k ** 3))
-        run_case("tile%d" % k, path, k * L, 3, r_max, default_runs(), sample="tile%d" % k)
+    scale_study(dump, L, r_max, count)
     if not QUICK:
         friction_study()
+        cu6_study()
         bimodal_study()
     disk_study()
     rows = load()
@@ -518,6 +573,7 @@ def main():
     if "L3a" in packed:
         print(table(rows, nearest_X(rows, "L3a", 3), "L3a"))
         print(friction_table(rows))
+        print(friction_table(rows, [n for n, *_ in CU6_SAMPLES]))
         print(friction_table(rows, [n for n, *_ in BIMODAL_SAMPLES]))
     # peak memory of a whole benchmark process (dump, mesh, every model in
     # turn) against particle count: the slope is the memory per particle

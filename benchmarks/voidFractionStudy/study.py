@@ -104,8 +104,10 @@ P_STOP = 100
 # the seed's Cu = 6 samples (L6a, b, c: 59,183 spheres, friction 0, 0.1,
 # 0.3): sizes uniform by number cannot reach d60/d10 = 6, a number fraction
 # linear in log d can (d_max/d_min 23 with eight classes); smallest radius
-CU6_SAMPLES = [("L6a", 59183, 0.5e-3, 6.0, 0.0), ("L6b", 59183, 0.5e-3, 6.0, 0.1),
-               ("L6c", 59183, 0.5e-3, 6.0, 0.3)]
+# 1.5 mm, so the DEM step is a fifth of its Rayleigh time (at 0.5 mm
+# LIGGGHTS lost spheres)
+CU6_SAMPLES = [("L6a", 59183, 1.5e-3, 6.0, 0.0), ("L6b", 59183, 1.5e-3, 6.0, 0.1),
+               ("L6c", 59183, 1.5e-3, 6.0, 0.3)]
 
 # the seed's Table 5 bimodal samples: name, d_coarse/d_fine, fines content by
 # mass, box width in coarse diameters, solid fraction expected. The seed's
@@ -137,7 +139,7 @@ def make_packing(name, n, r_mean, cu, mu, phi=0.62, p_stop=0):
     return pack_classes(name, n, radii, [0.125] * 8, mu, phi, p_stop, log_name)
 
 
-def pack_classes(name, n, radii, weights, mu, phi, p_stop, what):
+def pack_classes(name, n, radii, weights, mu, phi, p_stop, what, settle=0):
     """LIGGGHTS periodic packing of n spheres in eight size classes (radii,
     number fractions); returns (dump path, box side)."""
     out_dir = os.path.join(WORK, "packings")
@@ -150,12 +152,17 @@ def pack_classes(name, n, radii, weights, mu, phi, p_stop, what):
         log("LIGGGHTS: packing %s (%s%s)" % (name, what, ", to %g Pa" % p_stop if p_stop else ""))
         var = {"N": n, "L0": L0, "L1": L1, "mu": mu, "seed": 86028157, "out": dump,
                "skin": 0.3 * min(radii), "compressSteps": 20000, "relaxSteps": 10000,
-               "pStop": p_stop, "rate": -0.5}
+               "pStop": p_stop, "rate": -0.5, "settle": settle}
         var.update({"r%d" % (k + 1): r for k, r in enumerate(radii)})
         var.update({"w%d" % (k + 1): w for k, w in enumerate(weights)})
         args = " ".join("-var %s %r" % (k, v) for k, v in var.items())
         sh("liggghts -in %s/in.periodicPacking %s -log %s.log -screen %s.screen"
            % (HERE, args, dump, dump), out_dir)
+        kept = len(read_dump(dump)[1])
+        if kept != n:
+            os.rename(dump, dump + ".bad")
+            sys.exit("%s: LIGGGHTS kept %d of %d spheres (time step too long for the smallest?); "
+                     "see %s.screen" % (name, kept, n, dump))
     return dump, box_side(dump) if p_stop else L1
 
 
@@ -166,7 +173,10 @@ def make_log_packing(name, n, r_min, cu, mu):
     goes to zero. Compressed to P_STOP; returns (dump path, box side)."""
     radii = [r_min * cu ** (2 * k / 8) for k in range(8)]
     what = "%d spheres, Cu %g, number linear in log d, friction %.1f" % (n, cu, mu)
-    return pack_classes(name, n, radii, [0.125] * 8, mu, 0.62, P_STOP, what)
+    # the largest spheres are 23 times the smallest: compressed at the
+    # strain rate of the others they build a collisional pressure, so the
+    # box is held 1000 steps whenever the pressure passes P_STOP
+    return pack_classes(name, n, radii, [0.125] * 8, mu, 0.62, P_STOP, what, settle=1000)
 
 
 def make_bimodal_packing(name, ratio, fines, width, phi):

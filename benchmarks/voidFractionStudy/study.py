@@ -53,18 +53,14 @@ usage: study.py [--quick] [--2d] [--friction] [--bimodal] [--cu6] [--scale]
 import csv
 import math
 import os
-import shutil
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tests"))
-from foamCase import ROOT, box_block_mesh, new_case, set_coupling, sh  # noqa: E402
+from foamCase import ROOT, box_block_mesh, new_case, sh  # noqa: E402
 
 QUICK = "--quick" in sys.argv
 ONLY_2D = "--2d" in sys.argv
-ONLY_FRICTION = "--friction" in sys.argv
-ONLY_BIMODAL = "--bimodal" in sys.argv
-ONLY_CU6 = "--cu6" in sys.argv
 ONLY_SCALE = "--scale" in sys.argv
 WORK = os.path.join(ROOT, "build", "study")
 CSV = os.path.join(WORK, "results.csv")
@@ -380,10 +376,9 @@ def bimodal_study():
         sphere_study(name, *make_bimodal_packing(name, ratio, fines, width, phi))
 
 
-def friction_table(rows, names=("L1.2a", "L1.2b", "L1.2c", "L3a", "L3b", "L3c")):
+def series_table(rows, names):
     """Error (%) of each model at its default against analytical, X near 3,
-    for the given samples (default: the frictionless samples and their
-    friction series)."""
+    for the given samples."""
     names = [n for n in names if any(r["sample"] == n for r in rows)]
     out = ["| model | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
     for model, key, values in SWEEPS:
@@ -408,6 +403,16 @@ def replace_rows(samples):
             w.writerows(kept)
     elif os.path.exists(CSV):
         os.remove(CSV)
+
+
+def series():
+    """The sample series the full study runs after the scale series, each
+    also alone with its flag: flag, samples (their rows are replaced), the
+    function that runs them, the samples of its table."""
+    return [("--friction", FRICTION_SAMPLES, friction_study,
+             ("L1.2a", "L1.2b", "L1.2c", "L3a", "L3b", "L3c")),
+            ("--cu6", CU6_SAMPLES, cu6_study, [n for n, *_ in CU6_SAMPLES]),
+            ("--bimodal", BIMODAL_SAMPLES, bimodal_study, [n for n, *_ in BIMODAL_SAMPLES])]
 
 
 def default_runs():
@@ -539,27 +544,18 @@ def main():
         rows = load()
         print(table(rows, nearest_X(rows, DISKS, 3), DISKS, SWEEPS_2D))
         return
-    if ONLY_FRICTION:
-        replace_rows({n for n, *_ in FRICTION_SAMPLES})
-        friction_study()
-        print(friction_table(load()))
-        return
     if ONLY_SCALE:
         replace_rows({r["sample"] for r in load() if r["sample"].startswith("tile")})
         dump, L = make_packing("L1.2a", 8262, 1.17e-3, 1.2, 0.0)
         centres, radii = read_dump(dump)
         scale_study(dump, L, max(radii), len(radii))
         return
-    if ONLY_CU6:
-        replace_rows({n for n, *_ in CU6_SAMPLES})
-        cu6_study()
-        print(friction_table(load(), [n for n, *_ in CU6_SAMPLES]))
-        return
-    if ONLY_BIMODAL:
-        replace_rows({n for n, *_ in BIMODAL_SAMPLES})
-        bimodal_study()
-        print(friction_table(load(), [n for n, *_ in BIMODAL_SAMPLES]))
-        return
+    for flag, samples, run_series, names in series():
+        if flag in sys.argv:
+            replace_rows({n for n, *_ in samples})
+            run_series()
+            print(series_table(load(), names))
+            return
     if os.path.exists(CSV):
         os.remove(CSV)
     # the seed's Table 4 samples L1.2a and (full study) L3a, frictionless
@@ -572,9 +568,8 @@ def main():
     run_case("L1.2a-X3-np2", dump, L, 3, r_max, default_runs(), nprocs=2)
     scale_study(dump, L, r_max, count)
     if not QUICK:
-        friction_study()
-        cu6_study()
-        bimodal_study()
+        for _, _, run_series, _ in series():
+            run_series()
     disk_study()
     rows = load()
     X3 = plots(rows)
@@ -582,9 +577,8 @@ def main():
     print(table(rows, nearest_X(rows, DISKS, 3), DISKS, SWEEPS_2D))
     if "L3a" in packed:
         print(table(rows, nearest_X(rows, "L3a", 3), "L3a"))
-        print(friction_table(rows))
-        print(friction_table(rows, [n for n, *_ in CU6_SAMPLES]))
-        print(friction_table(rows, [n for n, *_ in BIMODAL_SAMPLES]))
+        for _, _, _, names in series():
+            print(series_table(rows, names))
     # peak memory of a whole benchmark process (dump, mesh, every model in
     # turn) against particle count: the slope is the memory per particle
     peaks = sorted({(int(r["nParticles"]), max(float(q["peak_memory_MB"]) for q in rows if q["sample"] == r["sample"]))

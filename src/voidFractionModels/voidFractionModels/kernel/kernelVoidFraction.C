@@ -1,6 +1,7 @@
 #include "kernelVoidFraction.H"
 #include "addToRunTimeSelectionTable.H"
 #include "emptyPolyPatch.H"
+#include "expBatch.H"
 
 #include <algorithm>
 
@@ -41,10 +42,10 @@ Foam::voidFractionModels::kernel::kernel
         bandwidthOverCellSize_ =
             positiveCoeff("bandwidthOverCellSize", 0.4);
     }
-    collectWalls(mesh, coeffs_.lookupOrDefault<bool>("reflectAtWalls", true));
     cellSize_.setSize(mesh.nCells());
     forAll(cellSize_, celli) cellSize_[celli] = cellSize(celli);
     maxCellSize_ = returnReduce(max(cellSize_), maxOp<scalar>());
+    collectWalls(mesh, coeffs_.lookupOrDefault<bool>("reflectAtWalls", true));
     if (locator_.isTensorGrid())
     {
         for (direction d = 0; d < 3; ++d)
@@ -71,7 +72,7 @@ Foam::scalar Foam::voidFractionModels::kernel::imageReach(const scalar) const
 void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bool reflect)
 {
     // no wall: no particle has images
-    wallClearance_.setSize(mesh.nCells(), GREAT);
+    nearWalls_.setSize(mesh.nCells(), 0);
     if (!reflect) return;
     const vectorField& Sf = mesh.faceAreas();
     const vectorField& Cf = mesh.faceCentres();
@@ -142,15 +143,18 @@ void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bo
 
     const pointField& points = mesh.points();
     const labelListList& cellPoints = mesh.cellPoints();
-    forAll(wallClearance_, celli)
+    forAll(nearWalls_, celli)
     {
-        for (const wallPlane& P : walls_)
+        const scalar rc = cellReach(celli);
+        forAll(walls_, w)
         {
+            const wallPlane& P = walls_[w];
+            scalar clearance = GREAT;
             for (const label pointi : cellPoints[celli])
             {
-                wallClearance_[celli] =
-                    min(wallClearance_[celli], P.offset - (P.normal & points[pointi]));
+                clearance = min(clearance, P.offset - (P.normal & points[pointi]));
             }
+            if (clearance < rc) nearWalls_[celli] |= uint64_t(1) << w;
         }
     }
 }
@@ -168,10 +172,14 @@ void Foam::voidFractionModels::kernel::findImages
     imageWall_.clear();
     imageWall_.append(-1);
     nMirrors_ = 0;
-    if (celli >= 0 && rc <= wallClearance_[celli]) return;
+    // a centre in this mesh: only the walls its cell's kernel may reach
+    const uint64_t candidates =
+        (celli >= 0 && rc <= cellReach(celli)) ? nearWalls_[celli] : ~uint64_t(0);
+    if (!candidates) return;
     label nNear = 0;
     forAll(walls_, w)
     {
+        if (!((candidates >> w) & 1)) continue;
         const wallPlane& P = walls_[w];
         const scalar d = P.offset - (P.normal & c);
         if (d < 0 || d >= rc || nNear == 3) continue;
@@ -204,48 +212,90 @@ void Foam::voidFractionModels::kernel::findImages
 }
 
 
-void Foam::voidFractionModels::kernel::axisFactors
+Foam::label Foam::voidFractionModels::kernel::axisWindow
 (
     const direction d,
     const scalar x,
-    const scalar b,
     const scalar rc
 )
 {
     const scalarList& g = locator_.gridPlanes(d);
-    const scalarList& xc = gridCentres_[d];
-
-    // cells [first, end) whose centres lie within rc of x: the interval
-    // holding the low end of the reach, then the centres decide
-    label first = 0, end = 0;
-    if (x + rc >= g.first() && x - rc <= g.last())
+    const label nCells = g.size() - 1;
+    if (x + rc < g.first() || x - rc > g.last())
     {
+        firstIndex_[d] = 0;
+        return 0;
+    }
+    label first, end;
+    const scalar inv = locator_.invSpacing(d);
+    if (inv > 0)
+    {
+        // centre k at g0 + (k + 1/2) h: the window by arithmetic, widened
+        // by round-off; the ball test of gridWeights is the exact one
+        const scalar lo = (x - rc - g.first())*inv - 0.5 - 1e-9;
+        const scalar hi = (x + rc - g.first())*inv - 0.5 + 1e-9;
+        first = (lo <= 0) ? 0 : label(lo) + 1;
+        end = (hi < 0) ? 0 : min(label(hi) + 1, nCells);
+    }
+    else
+    {
+        // the intervals holding the ends of the reach, then the centres
+        const scalarList& xc = gridCentres_[d];
         const scalar from = max(x - rc, g.first());
         const scalar to = min(x + rc, g.last());
         first = locator_.interval(d, from);
         first += (xc[first] < from);
-        end = first;
-        while (end < xc.size() && xc[end] <= to) ++end;
+        end = locator_.interval(d, to) + 1;
+        end -= (xc[end - 1] > to);
     }
     firstIndex_[d] = first;
-    const label n = end - first;
-    factor_[d].setSize(n);
-    distSqr_[d].setSize(n);
-    scalar* f = factor_[d].data();
-    scalar* dd = distSqr_[d].data();
-    const scalar* h = gridWidths_[d].cdata() + first;
-    const scalar* xi = xc.cdata() + first;
-    const scalar invB2 = 1/sqr(b);
-    const FixedList<scalar, 2>& m = mirrors_[d];
-    for (label k = 0; k < n; ++k)
+    return max(end - first, label(0));
+}
+
+
+void Foam::voidFractionModels::kernel::axisFactors(const scalar x[3], const scalar b, const scalar rc)
+{
+    label n[3];
+    label total = 0;
+    for (direction d = 0; d < 3; ++d)
     {
-        dd[k] = sqr(xi[k] - x);
-        scalar gauss = exp(-dd[k]*invB2);
-        for (label j = 0; j < nMirrors_[d]; ++j)
+        n[d] = axisWindow(d, x[d], rc);
+        total += n[d]*(1 + nMirrors_[d]);
+    }
+    const scalar invB2 = 1/sqr(b);
+
+    // all Gaussians of the particle in one call, padded to whole vectors
+    // of four: the values are few, so only together do they fill them
+    exponents_.setSize((total + 3)/4*4);
+    scalar* e = exponents_.data();
+    for (direction d = 0; d < 3; ++d)
+    {
+        distSqr_[d].setSize(n[d]);
+        scalar* dd = distSqr_[d].data();
+        const scalar* xi = gridCentres_[d].cdata() + firstIndex_[d];
+        const FixedList<scalar, 2>& m = mirrors_[d];
+        for (label k = 0; k < n[d]; ++k)
         {
-            gauss += exp(-sqr(xi[k] - m[j])*invB2);
+            dd[k] = sqr(xi[k] - x[d]);
+            *e++ = -dd[k]*invB2;
+            for (label j = 0; j < nMirrors_[d]; ++j) *e++ = -sqr(xi[k] - m[j])*invB2;
         }
-        f[k] = h[k]*gauss;
+    }
+    for (label i = total; i < exponents_.size(); ++i) *e++ = 0;
+    expBatch::expNonPositive(exponents_.cdata(), exponents_.data(), exponents_.size());
+
+    const scalar* gauss = exponents_.cdata();
+    for (direction d = 0; d < 3; ++d)
+    {
+        factor_[d].setSize(n[d]);
+        scalar* f = factor_[d].data();
+        const scalar* h = gridWidths_[d].cdata() + firstIndex_[d];
+        for (label k = 0; k < n[d]; ++k)
+        {
+            scalar sum = *gauss++;
+            for (label j = 0; j < nMirrors_[d]; ++j) sum += *gauss++;
+            f[k] = h[k]*sum;
+        }
     }
 }
 
@@ -258,7 +308,8 @@ void Foam::voidFractionModels::kernel::gridWeights
     const scalar rc
 )
 {
-    for (direction d = 0; d < 3; ++d) axisFactors(d, c[d], b, rc);
+    const scalar x[3] = {c.x(), c.y(), c.z()};
+    axisFactors(x, b, rc);
     const scalarList& fx = factor_[0];
     const scalarList& fy = factor_[1];
     const scalarList& fz = factor_[2];
@@ -360,8 +411,7 @@ void Foam::voidFractionModels::kernel::distribute
     forAll(x, p)
     {
         const label seed = centreCells_[p];
-        b_[p] = (seed < 0) ? 0
-              : (bandwidth_ > 0) ? bandwidth_ : bandwidthOverCellSize_*cellSize_[seed];
+        b_[p] = (seed < 0) ? 0 : cellBandwidth(seed);
     }
     combineOverGroup(b_, maxEqOp<scalar>());
 

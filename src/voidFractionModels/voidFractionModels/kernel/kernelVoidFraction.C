@@ -14,6 +14,72 @@ namespace voidFractionModels
 }
 }
 
+namespace
+{
+// Uniform planes g (1/spacing inv): the first cell and the number of cells
+// whose centres, at g0 + (k + 1/2) h, lie within rc of x; by arithmetic,
+// widened by round-off (the ball test of ballRows is the exact one)
+inline Foam::label uniformWindow
+(
+    const Foam::scalarList& g,
+    const Foam::scalar inv,
+    const Foam::scalar x,
+    const Foam::scalar rc,
+    Foam::label& first
+)
+{
+    const Foam::scalar lo = (x - rc - g.first())*inv - 0.5 - 1e-9;
+    const Foam::scalar hi = (x + rc - g.first())*inv - 0.5 + 1e-9;
+    first = (lo <= 0) ? 0 : Foam::label(lo) + 1;
+    const Foam::label end = (hi < 0) ? 0 : Foam::min(Foam::label(hi) + 1, g.size() - 1);
+    return Foam::max(end - first, Foam::label(0));
+}
+
+// Tensor grids: the cells of the windows (first index and size per
+// direction) inside the ball of radius sqrt(rc2), from the factors and
+// squared distances per direction, written from cells and fractions on;
+// their number returned, their weights added to sum. Inlined into both
+// callers: the compiler then sees the arrays are not the rows.
+inline Foam::label ballRows
+(
+    const Foam::particleCellLocator& locator,
+    const Foam::label first[3],
+    const Foam::label n[3],
+    const Foam::scalar* fx, const Foam::scalar* fy, const Foam::scalar* fz,
+    const Foam::scalar* dx, const Foam::scalar* dy, const Foam::scalar* dz,
+    const Foam::scalar rc2,
+    Foam::label* cells,
+    Foam::scalar* fractions,
+    Foam::scalar& sum
+)
+{
+    Foam::label m = 0;
+    for (Foam::label kz = 0; kz < n[2]; ++kz)
+    {
+        for (Foam::label ky = 0; ky < n[1]; ++ky)
+        {
+            // the squared distances along x fall, then rise: the cells in
+            // the ball are one run [lo, hi) of the row
+            const Foam::scalar left = rc2 - (dy[ky] + dz[kz]);
+            Foam::label lo = 0, hi = n[0];
+            while (lo < hi && dx[lo] > left) ++lo;
+            while (hi > lo && dx[hi - 1] > left) --hi;
+            if (lo == hi) continue;
+            const Foam::scalar fyz = fy[ky]*fz[kz];
+            const Foam::label* row = locator.gridRow(first[0], first[1] + ky, first[2] + kz);
+            for (Foam::label kx = lo; kx < hi; ++kx)
+            {
+                cells[m] = row[kx];
+                fractions[m] = fx[kx]*fyz;
+                sum += fractions[m++];
+            }
+        }
+    }
+    return m;
+}
+}
+
+
 
 Foam::voidFractionModels::kernel::kernel
 (
@@ -25,7 +91,8 @@ Foam::voidFractionModels::kernel::kernel
     sphereWalkVoidFraction(modelType, dict, mesh),
     bandwidth_(0),
     bandwidthOverCellSize_(0),
-    cutoff_(positiveCoeff("cutoff", 3))
+    cutoff_(positiveCoeff("cutoff", 3)),
+    uniform_(false)
 {
     if (coeffs_.found("bandwidth") && coeffs_.found("bandwidthOverCellSize"))
     {
@@ -46,6 +113,8 @@ Foam::voidFractionModels::kernel::kernel
     forAll(cellSize_, celli) cellSize_[celli] = cellSize(celli);
     maxCellSize_ = returnReduce(max(cellSize_), maxOp<scalar>());
     collectWalls(mesh, coeffs_.lookupOrDefault<bool>("reflectAtWalls", true));
+    uniform_ = locator_.isTensorGrid()
+     && locator_.invSpacing(0) > 0 && locator_.invSpacing(1) > 0 && locator_.invSpacing(2) > 0;
     if (locator_.isTensorGrid())
     {
         for (direction d = 0; d < 3; ++d)
@@ -220,34 +289,22 @@ Foam::label Foam::voidFractionModels::kernel::axisWindow
 )
 {
     const scalarList& g = locator_.gridPlanes(d);
-    const label nCells = g.size() - 1;
     if (x + rc < g.first() || x - rc > g.last())
     {
         firstIndex_[d] = 0;
         return 0;
     }
-    label first, end;
     const scalar inv = locator_.invSpacing(d);
-    if (inv > 0)
-    {
-        // centre k at g0 + (k + 1/2) h: the window by arithmetic, widened
-        // by round-off; the ball test of gridWeights is the exact one
-        const scalar lo = (x - rc - g.first())*inv - 0.5 - 1e-9;
-        const scalar hi = (x + rc - g.first())*inv - 0.5 + 1e-9;
-        first = (lo <= 0) ? 0 : label(lo) + 1;
-        end = (hi < 0) ? 0 : min(label(hi) + 1, nCells);
-    }
-    else
-    {
-        // the intervals holding the ends of the reach, then the centres
-        const scalarList& xc = gridCentres_[d];
-        const scalar from = max(x - rc, g.first());
-        const scalar to = min(x + rc, g.last());
-        first = locator_.interval(d, from);
-        first += (xc[first] < from);
-        end = locator_.interval(d, to) + 1;
-        end -= (xc[end - 1] > to);
-    }
+    if (inv > 0) return uniformWindow(g, inv, x, rc, firstIndex_[d]);
+
+    // the intervals holding the ends of the reach, then the centres
+    const scalarList& xc = gridCentres_[d];
+    const scalar from = max(x - rc, g.first());
+    const scalar to = min(x + rc, g.last());
+    label first = locator_.interval(d, from);
+    first += (xc[first] < from);
+    label end = locator_.interval(d, to) + 1;
+    end -= (xc[end - 1] > to);
     firstIndex_[d] = first;
     return max(end - first, label(0));
 }
@@ -300,6 +357,67 @@ void Foam::voidFractionModels::kernel::axisFactors(const scalar x[3], const scal
 }
 
 
+void Foam::voidFractionModels::kernel::finishRow
+(
+    const label p,
+    const label k0,
+    const label m,
+    const scalar sum
+)
+{
+    // nothing positive here: the row is the centre cell alone, where the
+    // fallback of distribute finds it
+    weights_.truncateEntries(sum > 0 ? k0 + m : k0);
+    if (sum == 0 && centreCells_[p] >= 0) weights_.append(centreCells_[p], 0);
+    sums_[p] = sum;
+}
+
+
+bool Foam::voidFractionModels::kernel::fixedWindowWeights
+(
+    const label p,
+    const point& c,
+    const scalar b,
+    const scalar rc
+)
+{
+    // four cells per direction whatever the window holds: fixed loops over
+    // local arrays, twelve Gaussians in three vectors; the cells beyond a
+    // shorter window repeat its last one and are never read
+    label first[3], n[3];
+    scalar e[12], dist[12];
+    const scalar invB2 = 1/sqr(b);
+    for (direction d = 0; d < 3; ++d)
+    {
+        n[d] = uniformWindow(locator_.gridPlanes(d), locator_.invSpacing(d), c[d], rc, first[d]);
+        if (n[d] > 4) return false;
+        const scalar* xc = gridCentres_[d].cdata();
+        const label last = gridCentres_[d].size() - 1;
+        for (label k = 0; k < 4; ++k)
+        {
+            dist[4*d + k] = sqr(xc[min(first[d] + k, last)] - c[d]);
+            e[4*d + k] = -dist[4*d + k]*invB2;
+        }
+    }
+    expBatch::expNonPositive(e, e, 12);
+    for (direction d = 0; d < 3; ++d)
+    {
+        const scalar h = gridWidths_[d][0];
+        for (label k = 0; k < 4; ++k) e[4*d + k] *= h;
+    }
+
+    const label k0 = weights_.extend(n[0]*n[1]*n[2]);
+    scalar sum = 0;
+    const label m = ballRows
+    (
+        locator_, first, n, e, e + 4, e + 8, dist, dist + 4, dist + 8, sqr(rc),
+        weights_.cellsData() + k0, weights_.fractionsData() + k0, sum
+    );
+    finishRow(p, k0, m, sum);
+    return true;
+}
+
+
 void Foam::voidFractionModels::kernel::gridWeights
 (
     const label p,
@@ -308,52 +426,25 @@ void Foam::voidFractionModels::kernel::gridWeights
     const scalar rc
 )
 {
+    const bool mirrored = nMirrors_[0] + nMirrors_[1] + nMirrors_[2] > 0;
+    if (uniform_ && !mirrored && fixedWindowWeights(p, c, b, rc)) return;
+
     const scalar x[3] = {c.x(), c.y(), c.z()};
     axisFactors(x, b, rc);
-    const scalarList& fx = factor_[0];
-    const scalarList& fy = factor_[1];
-    const scalarList& fz = factor_[2];
-    const scalarList& dx = distSqr_[0];
-    const scalarList& dy = distSqr_[1];
-    const scalarList& dz = distSqr_[2];
+    const label n[3] = {factor_[0].size(), factor_[1].size(), factor_[2].size()};
+    const label first[3] = {firstIndex_[0], firstIndex_[1], firstIndex_[2]};
 
     // room for the whole box of cells; the ball keeps about half of it
-    const label k0 = weights_.extend(fx.size()*fy.size()*fz.size());
-    label* cells = weights_.cellsData() + k0;
-    scalar* fractions = weights_.fractionsData() + k0;
-    const scalar rc2 = sqr(rc);
+    const label k0 = weights_.extend(n[0]*n[1]*n[2]);
     scalar sum = 0;
-    label n = 0;
-    forAll(fz, kz)
-    {
-        forAll(fy, ky)
-        {
-            // the squared distances along x fall, then rise: the cells in
-            // the ball are one run [lo, hi) of the row
-            const scalar left = rc2 - (dy[ky] + dz[kz]);
-            label lo = 0, hi = dx.size();
-            while (lo < hi && dx[lo] > left) ++lo;
-            while (hi > lo && dx[hi - 1] > left) --hi;
-            if (lo == hi) continue;
-            const scalar fyz = fy[ky]*fz[kz];
-            const label* row = locator_.gridRow
-            (
-                firstIndex_[0], firstIndex_[1] + ky, firstIndex_[2] + kz
-            );
-            for (label kx = lo; kx < hi; ++kx)
-            {
-                cells[n] = row[kx];
-                fractions[n] = fx[kx]*fyz;
-                sum += fractions[n++];
-            }
-        }
-    }
-
-    // nothing positive here: the row is the centre cell alone, where the
-    // fallback of distribute finds it
-    weights_.truncateEntries(sum > 0 ? k0 + n : k0);
-    if (sum == 0 && centreCells_[p] >= 0) weights_.append(centreCells_[p], 0);
-    sums_[p] = sum;
+    const label m = ballRows
+    (
+        locator_, first, n,
+        factor_[0].cdata(), factor_[1].cdata(), factor_[2].cdata(),
+        distSqr_[0].cdata(), distSqr_[1].cdata(), distSqr_[2].cdata(), sqr(rc),
+        weights_.cellsData() + k0, weights_.fractionsData() + k0, sum
+    );
+    finishRow(p, k0, m, sum);
 }
 
 

@@ -402,8 +402,10 @@ bool Foam::voidFractionModels::kernel::fixedWindowWeights
     expBatch::expNonPositive(e, e, 12);
     for (direction d = 0; d < 3; ++d)
     {
-        const scalar h = gridWidths_[d][0];
-        for (label k = 0; k < 4; ++k) e[4*d + k] *= h;
+        // each cell's own width: the planes are uniform to round-off only
+        const scalar* h = gridWidths_[d].cdata();
+        const label last = gridWidths_[d].size() - 1;
+        for (label k = 0; k < 4; ++k) e[4*d + k] *= h[min(first[d] + k, last)];
     }
 
     const label k0 = weights_.extend(n[0]*n[1]*n[2]);

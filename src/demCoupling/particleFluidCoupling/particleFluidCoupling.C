@@ -351,12 +351,11 @@ void Foam::particleFluidCoupling::beginStep
         }
 
         scalarField cellBeta;
-        voidFraction_->spread(beta_, cellBeta);
+        vectorField cellBetaV;
+        voidFraction_->spread(beta_, cellBeta, vectorField(beta_*v), cellBetaV);
         const scalarField& V = mesh_.V();
         Ksl_.primitiveFieldRef() = cellBeta/(rho_*V);
         Ksl_.correctBoundaryConditions();
-        vectorField cellBetaV;
-        voidFraction_->spread(vectorField(beta_*v), cellBetaV);
         dragSource_.primitiveFieldRef() = cellBetaV/(rho_*V);
         dragSource_.correctBoundaryConditions();
         forceSum_ = vectorField(n, Zero);

@@ -32,6 +32,38 @@ void Foam::voidFractionModel::spread
 }
 
 
+template<class TypeA, class TypeB>
+void Foam::voidFractionModel::spread
+(
+    const Field<TypeA>& perParticleA,
+    Field<TypeA>& perCellA,
+    const Field<TypeB>& perParticleB,
+    Field<TypeB>& perCellB
+)
+{
+    // one pass over the rows for both
+    perCellA.setSize(mesh_.nCells());
+    perCellA = pTraits<TypeA>::zero;
+    perCellB.setSize(mesh_.nCells());
+    perCellB = pTraits<TypeB>::zero;
+    forAll(perParticleA, p)
+    {
+        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+        {
+            const scalar w = weights_.fraction(k);
+            const label celli = weights_.cell(k);
+            perCellA[celli] += w*perParticleA[p];
+            perCellB[celli] += w*perParticleB[p];
+        }
+    }
+    if (smooths())
+    {
+        smoothComponents(perCellA);
+        smoothComponents(perCellB);
+    }
+}
+
+
 template<class Type>
 void Foam::voidFractionModel::gatherHere
 (
@@ -114,7 +146,30 @@ void Foam::voidFractionModel::gather
     Field<TypeB>& perParticleB
 )
 {
-    gatherHere(perCellA, perParticleA);
-    gatherHere(perCellB, perParticleB);
+    if (smooths())
+    {
+        gatherHere(perCellA, perParticleA);
+        gatherHere(perCellB, perParticleB);
+    }
+    else
+    {
+        // one pass over the rows for both fields
+        perParticleA.setSize(weights_.nParticles());
+        perParticleB.setSize(weights_.nParticles());
+        forAll(perParticleA, p)
+        {
+            TypeA sumA(pTraits<TypeA>::zero);
+            TypeB sumB(pTraits<TypeB>::zero);
+            for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+            {
+                const scalar w = weights_.fraction(k);
+                const label celli = weights_.cell(k);
+                sumA += w*perCellA[celli];
+                sumB += w*perCellB[celli];
+            }
+            perParticleA[p] = sumA;
+            perParticleB[p] = sumB;
+        }
+    }
     combineSums(perParticleA, perParticleB);
 }

@@ -20,14 +20,14 @@ void Foam::voidFractionModel::spread
 )
 {
     perCell.setSize(mesh_.nCells());
-    perCell = pTraits<Type>::zero;
-    forAll(perParticle, p)
-    {
-        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+    perCell = Zero;
+    weights_.forAllEntries
+    (
+        [&](const label p, const label celli, const scalar w)
         {
-            perCell[weights_.cell(k)] += weights_.fraction(k)*perParticle[p];
+            perCell[celli] += w*perParticle[p];
         }
-    }
+    );
     if (smooths()) smoothComponents(perCell);
 }
 
@@ -41,21 +41,18 @@ void Foam::voidFractionModel::spread
     Field<TypeB>& perCellB
 )
 {
-    // one pass over the rows for both
     perCellA.setSize(mesh_.nCells());
-    perCellA = pTraits<TypeA>::zero;
+    perCellA = Zero;
     perCellB.setSize(mesh_.nCells());
-    perCellB = pTraits<TypeB>::zero;
-    forAll(perParticleA, p)
-    {
-        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+    perCellB = Zero;
+    weights_.forAllEntries
+    (
+        [&](const label p, const label celli, const scalar w)
         {
-            const scalar w = weights_.fraction(k);
-            const label celli = weights_.cell(k);
             perCellA[celli] += w*perParticleA[p];
             perCellB[celli] += w*perParticleB[p];
         }
-    }
+    );
     if (smooths())
     {
         smoothComponents(perCellA);

@@ -86,13 +86,8 @@ Foam::label Foam::voidFractionModel::collectStatistics(const particleData& parti
     const label n = particles.size();
     scalarField& fractionSum = fractionSum_;
     scalarField& found = centreHolders_;
-    fractionSum.setSize(n);
     found.setSize(n);
-    forAll(fractionSum, p)
-    {
-        fractionSum[p] = weights_.sum(p);
-        found[p] = (centreCells_[p] >= 0);
-    }
+    forAll(found, p) found[p] = (centreCells_[p] >= 0);
     combineSums(fractionSum, found);
 
     // counts travel as scalars: exact far beyond any particle count
@@ -249,7 +244,7 @@ void Foam::voidFractionModel::update
     {
         particleVolumes_[p] = particleVolume(particles.radii()[p]);
     }
-    spread(particleVolumes_, solid_);
+    spreadVolumes();
     const label nOver = collectStatistics(particles);
     stats_.movedVolume = limitSolidFraction(nOver);
 
@@ -268,6 +263,26 @@ void Foam::voidFractionModel::update
     reduce(range, minOp<vector2D>());
     stats_.minVoidFraction = range.x();
     stats_.maxVoidFraction = -range.y();
+}
+
+
+void Foam::voidFractionModel::spreadVolumes()
+{
+    // the solid volumes and each particle's share in one read of the rows:
+    // they are the largest array of a step, and reading them dominates
+    solid_.setSize(mesh_.nCells());
+    solid_ = Zero;
+    fractionSum_.setSize(weights_.nParticles());
+    fractionSum_ = Zero;
+    weights_.forAllEntries
+    (
+        [&](const label p, const label celli, const scalar w)
+        {
+            solid_[celli] += w*particleVolumes_[p];
+            fractionSum_[p] += w;
+        }
+    );
+    if (smooths()) smoothVolumes(solid_);
 }
 
 

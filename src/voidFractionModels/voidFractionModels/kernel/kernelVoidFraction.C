@@ -242,8 +242,7 @@ void Foam::voidFractionModels::kernel::findImages
     imageWall_.append(-1);
     nMirrors_ = 0;
     // a centre in this mesh: only the walls its cell's kernel may reach
-    const uint64_t candidates =
-        (celli >= 0 && rc <= cellReach(celli)) ? nearWalls_[celli] : ~uint64_t(0);
+    const uint64_t candidates = reachableWalls(celli, rc);
     if (!candidates) return;
     label nNear = 0;
     forAll(walls_, w)
@@ -525,9 +524,14 @@ void Foam::voidFractionModels::kernel::distribute
         if (b_[p] > 0)
         {
             const scalar rc = cutoff_*b_[p];
-            findImages(x[p], centreCells_[p], rc);
-            if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
-            else walkWeights(p, x[p], b_[p], rc);
+            // most particles reach no wall: no images to look for
+            const bool alone = uniform_ && !reachableWalls(centreCells_[p], rc);
+            if (!alone || !fixedWindowWeights(p, x[p], b_[p], rc))
+            {
+                findImages(x[p], centreCells_[p], rc);
+                if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
+                else walkWeights(p, x[p], b_[p], rc);
+            }
         }
         weights_.endParticle();
         if (whole) normalise(p);

@@ -268,21 +268,15 @@ void Foam::voidFractionModel::update
 
 void Foam::voidFractionModel::spreadVolumes()
 {
-    // the solid volumes and each particle's share in one read of the rows:
-    // they are the largest array of a step, and reading them dominates
-    solid_.setSize(mesh_.nCells());
-    solid_ = Zero;
+    // each particle's share from the same read of the rows: they are the
+    // largest array of a step, and reading them dominates
     fractionSum_.setSize(weights_.nParticles());
     fractionSum_ = Zero;
-    weights_.forAllEntries
+    spreadAlso
     (
-        [&](const label p, const label celli, const scalar w)
-        {
-            solid_[celli] += w*particleVolumes_[p];
-            fractionSum_[p] += w;
-        }
+        particleVolumes_, solid_,
+        [&](const label p, const label, const scalar w) { fractionSum_[p] += w; }
     );
-    if (smooths()) smoothVolumes(solid_);
 }
 
 

@@ -12,11 +12,12 @@ void Foam::voidFractionModel::smoothComponents(Field<Type>& cellValues)
 }
 
 
-template<class Type>
-void Foam::voidFractionModel::spread
+template<class Type, class Also>
+void Foam::voidFractionModel::spreadAlso
 (
     const Field<Type>& perParticle,
-    Field<Type>& perCell
+    Field<Type>& perCell,
+    const Also& also
 )
 {
     perCell.setSize(mesh_.nCells());
@@ -26,9 +27,21 @@ void Foam::voidFractionModel::spread
         [&](const label p, const label celli, const scalar w)
         {
             perCell[celli] += w*perParticle[p];
+            also(p, celli, w);
         }
     );
     if (smooths()) smoothComponents(perCell);
+}
+
+
+template<class Type>
+void Foam::voidFractionModel::spread
+(
+    const Field<Type>& perParticle,
+    Field<Type>& perCell
+)
+{
+    spreadAlso(perParticle, perCell, [](const label, const label, const scalar) {});
 }
 
 
@@ -41,23 +54,17 @@ void Foam::voidFractionModel::spread
     Field<TypeB>& perCellB
 )
 {
-    perCellA.setSize(mesh_.nCells());
-    perCellA = Zero;
     perCellB.setSize(mesh_.nCells());
     perCellB = Zero;
-    weights_.forAllEntries
+    spreadAlso
     (
+        perParticleA, perCellA,
         [&](const label p, const label celli, const scalar w)
         {
-            perCellA[celli] += w*perParticleA[p];
             perCellB[celli] += w*perParticleB[p];
         }
     );
-    if (smooths())
-    {
-        smoothComponents(perCellA);
-        smoothComponents(perCellB);
-    }
+    if (smooths()) smoothComponents(perCellB);
 }
 
 

@@ -427,9 +427,6 @@ void Foam::voidFractionModels::kernel::gridWeights
     const scalar rc
 )
 {
-    const bool mirrored = nMirrors_[0] + nMirrors_[1] + nMirrors_[2] > 0;
-    if (uniform_ && !mirrored && fixedWindowWeights(p, c, b, rc)) return;
-
     const scalar x[3] = {c.x(), c.y(), c.z()};
     axisFactors(x, b, rc);
     const label n[3] = {factor_[0].size(), factor_[1].size(), factor_[2].size()};
@@ -524,14 +521,16 @@ void Foam::voidFractionModels::kernel::distribute
         if (b_[p] > 0)
         {
             const scalar rc = cutoff_*b_[p];
-            // most particles reach no wall: no images to look for
+            // most particles reach no wall: no images to look for (a
+            // particle alone is on uniform planes, where only the mirror
+            // counts are read, never images_)
             const bool alone = uniform_ && !reachableWalls(centreCells_[p], rc);
-            if (!alone || !fixedWindowWeights(p, x[p], b_[p], rc))
-            {
-                findImages(x[p], centreCells_[p], rc);
-                if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
-                else walkWeights(p, x[p], b_[p], rc);
-            }
+            if (alone) nMirrors_ = 0;
+            else findImages(x[p], centreCells_[p], rc);
+            const bool mirrored = nMirrors_[0] + nMirrors_[1] + nMirrors_[2] > 0;
+            if (uniform_ && !mirrored && fixedWindowWeights(p, x[p], b_[p], rc)) {}
+            else if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
+            else walkWeights(p, x[p], b_[p], rc);
         }
         weights_.endParticle();
         if (whole) normalise(p);

@@ -125,18 +125,24 @@ void Foam::voidFractionModel::combineSums
     static_assert(nA + nB <= 6, "two sums of at most six components");
     if (!Pstream::parRun()) return;
 
-    // a symmTensor only carries the six sums through the exchange
-    List<symmTensor> both(a.size(), Zero);
-    forAll(both, p)
+    // a symmTensor only carries the six sums through the exchange; when
+    // each particle has its holders, only those other ranks hold too
+    const bool distributed = holders_.distributed();
+    const labelList& shared = holders_.sharedHeld();
+    List<symmTensor> both(distributed ? shared.size() : a.size(), Zero);
+    forAll(both, i)
     {
-        for (direction d = 0; d < nA; ++d) both[p][d] = component(a[p], d);
-        for (direction d = 0; d < nB; ++d) both[p][nA + d] = component(b[p], d);
+        const label p = distributed ? shared[i] : i;
+        for (direction d = 0; d < nA; ++d) both[i][d] = component(a[p], d);
+        for (direction d = 0; d < nB; ++d) both[i][nA + d] = component(b[p], d);
     }
-    holders_.combine(both, plusEqOp<symmTensor>());
-    forAll(both, p)
+    if (distributed) holders_.combineShared(both, plusEqOp<symmTensor>());
+    else holders_.combine(both, plusEqOp<symmTensor>());
+    forAll(both, i)
     {
-        for (direction d = 0; d < nA; ++d) setComponent(a[p], d) = both[p][d];
-        for (direction d = 0; d < nB; ++d) setComponent(b[p], d) = both[p][nA + d];
+        const label p = distributed ? shared[i] : i;
+        for (direction d = 0; d < nA; ++d) setComponent(a[p], d) = both[i][d];
+        for (direction d = 0; d < nB; ++d) setComponent(b[p], d) = both[i][nA + d];
     }
 }
 

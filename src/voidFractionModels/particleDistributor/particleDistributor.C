@@ -94,14 +94,15 @@ Foam::particleHolders Foam::particleDistributor::distribute
     const vectorField& v = owned.velocities();
     const bool withU = (v.size() == owned.size() && owned.size());
     labelListList subMap(nProcs);
+    forAll(sends, rank) subMap[rank].transfer(sends[rank]);
+    const labelListList flags(particleHolders::sentFlags(owned.size(), subMap));
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    List<labelList> receivedIds(nProcs);
+    List<labelList> receivedIds(nProcs), receivedFlags(nProcs);
     List<pointField> receivedX(nProcs);
     List<scalarField> receivedR(nProcs);
     List<vectorField> receivedU(nProcs);
     forAll(sends, rank)
     {
-        subMap[rank].transfer(sends[rank]);
         const labelList& send = subMap[rank];
         if (send.empty()) continue;
         labelList ids(UIndirectList<label>(owned.ids(), send));
@@ -114,11 +115,12 @@ Foam::particleHolders Foam::particleDistributor::distribute
             receivedX[rank].transfer(sx);
             receivedR[rank].transfer(sr);
             receivedU[rank].transfer(su);
+            receivedFlags[rank] = flags[rank];
         }
         else
         {
             UOPstream os(rank, buffers);
-            os << ids << sx << sr << su;
+            os << ids << sx << sr << su << flags[rank];
         }
     }
     labelList recvSizes;
@@ -129,7 +131,8 @@ Foam::particleHolders Foam::particleDistributor::distribute
         if (rank != Pstream::myProcNo() && recvSizes[rank])
         {
             UIPstream is(rank, buffers);
-            is >> receivedIds[rank] >> receivedX[rank] >> receivedR[rank] >> receivedU[rank];
+            is >> receivedIds[rank] >> receivedX[rank] >> receivedR[rank] >> receivedU[rank]
+               >> receivedFlags[rank];
         }
         nHeld += receivedIds[rank].size();
         nWithU += receivedU[rank].size();
@@ -151,7 +154,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
     labelListList constructMap(nProcs);
     pointField heldX(nHeld);
     scalarField heldR(nHeld);
-    labelList heldIds(nHeld);
+    labelList heldIds(nHeld), heldFlags(nHeld);
     vectorField heldU(nWithU);
     k = 0;
     forAll(receivedIds, rank)
@@ -165,11 +168,12 @@ Foam::particleHolders Foam::particleDistributor::distribute
             heldX[to] = receivedX[rank][i];
             heldR[to] = receivedR[rank][i];
             heldIds[to] = receivedIds[rank][i];
+            heldFlags[to] = receivedFlags[rank][i];
             if (nWithU) heldU[to] = receivedU[rank][i];
         }
     }
 
-    particleHolders holders(owned.size(), std::move(subMap), std::move(constructMap), nHeld);
+    particleHolders holders(owned.size(), std::move(subMap), std::move(constructMap), heldFlags);
     held = particleData(std::move(heldX), std::move(heldR), std::move(heldIds));
     if (nWithU) held.setVelocities(std::move(heldU));
     return holders;

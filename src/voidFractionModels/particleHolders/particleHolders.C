@@ -7,27 +7,62 @@ Foam::particleHolders::particleHolders()
 {}
 
 
+Foam::labelList Foam::particleHolders::timesSent
+(
+    const label nOwned,
+    const labelListList& subMap
+)
+{
+    labelList n(nOwned, 0);
+    for (const labelList& toRank : subMap)
+    {
+        for (const label p : toRank) ++n[p];
+    }
+    return n;
+}
+
+
+Foam::labelListList Foam::particleHolders::sentFlags
+(
+    const label nOwned,
+    const labelListList& subMap
+)
+{
+    // the lowest rank a particle is sent to counts it
+    const labelList nSent(timesSent(nOwned, subMap));
+    boolList first;
+    first.setSize(nOwned, true);
+    labelListList flags(subMap.size());
+    forAll(subMap, rank)
+    {
+        flags[rank].setSize(subMap[rank].size());
+        forAll(subMap[rank], i)
+        {
+            const label p = subMap[rank][i];
+            flags[rank][i] = (first[p] ? countedFlag : 0) | (nSent[p] > 1 ? sharedFlag : 0);
+            first[p] = false;
+        }
+    }
+    return flags;
+}
+
+
 Foam::particleHolders::particleHolders
 (
     const label nOwned,
     labelListList&& subMap,
     labelListList&& constructMap,
-    const label nHeld
+    const labelUList& heldFlags
 )
 :
-    map_(nHeld, std::move(subMap), std::move(constructMap)),
+    map_(heldFlags.size(), std::move(subMap), std::move(constructMap)),
     distributed_(true),
     nOwned_(nOwned),
+    counted_(heldFlags.size()),
     nOwnedShared_(0)
 {
-    // the lowest rank a particle was sent to counts it; a particle sent to
-    // several is shared, numbered in the owner's compact list
-    const labelListList& sends = map_.subMap();
-    labelList nSent(nOwned, 0);
-    for (const labelList& toRank : sends)
-    {
-        for (const label p : toRank) ++nSent[p];
-    }
+    // the owner's compact list: its shared particles in owned order
+    const labelList nSent(timesSent(nOwned, map_.subMap()));
     labelList ownedShared(nOwned, -1);
     forAll(nSent, p)
     {
@@ -40,80 +75,36 @@ Foam::particleHolders::particleHolders
         }
         if (nSent[p] > 1) ownedShared[p] = nOwnedShared_++;
     }
-    boolList first;
-    first.setSize(nOwned, true);
-    List<boolList> counts(sends.size()), shares(sends.size());
-    labelListList sharedSubMap(sends.size());
-    forAll(sends, rank)
-    {
-        counts[rank].setSize(sends[rank].size());
-        shares[rank].setSize(sends[rank].size());
-        DynamicList<label> sub;
-        forAll(sends[rank], i)
-        {
-            const label p = sends[rank][i];
-            counts[rank][i] = first[p];
-            first[p] = false;
-            shares[rank][i] = (ownedShared[p] >= 0);
-            if (shares[rank][i]) sub.append(ownedShared[p]);
-        }
-        sharedSubMap[rank].transfer(sub);
-    }
-
-    // the flags travel as the particles do: the i-th sent to each rank
-    counted_.setSize(nHeld, false);
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    forAll(sends, rank)
-    {
-        if (rank == Pstream::myProcNo() || sends[rank].empty()) continue;
-        UOPstream os(rank, buffers);
-        os << counts[rank] << shares[rank];
-    }
-    buffers.finishedSends();
-    const labelListList& lands = map_.constructMap();
-    List<boolList> received(lands.size());
-    boolList shared;
-    shared.setSize(nHeld, false);
-    forAll(lands, rank)
-    {
-        if (lands[rank].empty()) continue;
-        boolList counted;
-        if (rank == Pstream::myProcNo())
-        {
-            counted = counts[rank];
-            received[rank] = shares[rank];
-        }
-        else
-        {
-            UIPstream is(rank, buffers);
-            is >> counted >> received[rank];
-        }
-        forAll(lands[rank], i)
-        {
-            counted_[lands[rank][i]] = counted[i];
-            shared[lands[rank][i]] = received[rank][i];
-        }
-    }
-
-    // the holder's compact list: the shared held particles in held order
-    labelList heldShared(nHeld, -1);
+    // the holder's: its shared particles in held order
+    labelList heldShared(heldFlags.size(), -1);
     DynamicList<label> sharedHeld;
-    forAll(shared, h)
+    forAll(heldFlags, h)
     {
-        if (shared[h])
+        counted_[h] = heldFlags[h] & countedFlag;
+        if (heldFlags[h] & sharedFlag)
         {
             heldShared[h] = sharedHeld.size();
             sharedHeld.append(h);
         }
     }
     sharedHeld_.transfer(sharedHeld);
-    labelListList sharedConstructMap(lands.size());
-    forAll(lands, rank)
+
+    // both maps list the particles in the order they are sent
+    const labelListList& sends = map_.subMap();
+    const labelListList& lands = map_.constructMap();
+    labelListList sharedSubMap(sends.size()), sharedConstructMap(lands.size());
+    forAll(sends, rank)
     {
-        DynamicList<label> construct;
-        forAll(lands[rank], i)
+        DynamicList<label> sub;
+        for (const label p : sends[rank])
         {
-            if (received[rank][i]) construct.append(heldShared[lands[rank][i]]);
+            if (ownedShared[p] >= 0) sub.append(ownedShared[p]);
+        }
+        sharedSubMap[rank].transfer(sub);
+        DynamicList<label> construct;
+        for (const label h : lands[rank])
+        {
+            if (heldShared[h] >= 0) construct.append(heldShared[h]);
         }
         sharedConstructMap[rank].transfer(construct);
     }

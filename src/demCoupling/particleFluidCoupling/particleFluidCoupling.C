@@ -354,10 +354,10 @@ void Foam::particleFluidCoupling::beginStep
         vectorField cellBetaV;
         voidFraction_->spread(beta_, cellBeta, vectorField(beta_*v), cellBetaV);
         const scalarField& V = mesh_.V();
+        // the equations read the cell values only: the boundaries (and
+        // their processor exchange) wait for a write time, see endStep
         Ksl_.primitiveFieldRef() = cellBeta/(rho_*V);
-        Ksl_.correctBoundaryConditions();
         dragSource_.primitiveFieldRef() = cellBetaV/(rho_*V);
-        dragSource_.correctBoundaryConditions();
         forceSum_ = vectorField(n, Zero);
         timeForces_ += clock_.timeIncrement();
     }
@@ -404,17 +404,28 @@ void Foam::particleFluidCoupling::endStep
         }
         if (buoyancy_) F[i] -= rho_*volumes[i]*g_;
     }
-    const vector particleGain = sumOverParticles(stepDrag_);
-
-    // what the fluid lost to the particles in this step's equations
-    const vector fluidLoss = rho_*gSum
+    // what the particles gained and what the fluid lost to them in this
+    // step's equations, in one reduction
+    const particleHolders& holders = voidFraction_->holders();
+    vectorField balance(2, Zero);
+    forAll(stepDrag_, i)
+    {
+        if (holders.counted(i)) balance[0] += stepDrag_[i];
+    }
+    balance[1] = rho_*sum
     (
         mesh_.V().field()*(Ksl_.primitiveField()*U.primitiveField()
       - dragSource_.primitiveField())
     );
+    reduce(balance, sumOp<vectorField>());
     const scalar error =
-        mag(fluidLoss - particleGain)/max(mag(particleGain), VSMALL);
+        mag(balance[1] - balance[0])/max(mag(balance[0]), VSMALL);
     worstMomentumError_ = max(worstMomentumError_, error);
+    if (mesh_.time().writeTime())
+    {
+        Ksl_.correctBoundaryConditions();
+        dragSource_.correctBoundaryConditions();
+    }
     timeForces_ += clock_.timeIncrement();
 
     if (fluidStep_ == fluidStepsPerCoupling_)

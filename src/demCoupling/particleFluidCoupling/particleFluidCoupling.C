@@ -259,7 +259,7 @@ void Foam::particleFluidCoupling::handleOutside()
 
 
 template<class Type>
-Type Foam::particleFluidCoupling::sumOverParticles(const UList<Type>& values) const
+Type Foam::particleFluidCoupling::localSumOverParticles(const UList<Type>& values) const
 {
     const particleHolders& holders = voidFraction_->holders();
     Type sum(pTraits<Type>::zero);
@@ -267,7 +267,14 @@ Type Foam::particleFluidCoupling::sumOverParticles(const UList<Type>& values) co
     {
         if (holders.counted(i)) sum += values[i];
     }
-    return returnReduce(sum, sumOp<Type>());
+    return sum;
+}
+
+
+template<class Type>
+Type Foam::particleFluidCoupling::sumOverParticles(const UList<Type>& values) const
+{
+    return returnReduce(localSumOverParticles(values), sumOp<Type>());
 }
 
 
@@ -406,12 +413,8 @@ void Foam::particleFluidCoupling::endStep
     }
     // what the particles gained and what the fluid lost to them in this
     // step's equations, in one reduction
-    const particleHolders& holders = voidFraction_->holders();
-    vectorField balance(2, Zero);
-    forAll(stepDrag_, i)
-    {
-        if (holders.counted(i)) balance[0] += stepDrag_[i];
-    }
+    vectorField balance(2);
+    balance[0] = localSumOverParticles(stepDrag_);
     balance[1] = rho_*sum
     (
         mesh_.V().field()*(Ksl_.primitiveField()*U.primitiveField()

@@ -173,7 +173,10 @@ Foam::particleHolders Foam::particleDistributor::distribute
         }
     }
 
-    particleHolders holders(owned.size(), std::move(subMap), std::move(constructMap), heldFlags);
+    particleHolders holders
+    (
+        owned.size(), std::move(subMap), flags, std::move(constructMap), heldFlags
+    );
     held = particleData(std::move(heldX), std::move(heldR), std::move(heldIds));
     if (nWithU) held.setVelocities(std::move(heldU));
     return holders;

@@ -7,29 +7,27 @@ Foam::particleHolders::particleHolders()
 {}
 
 
-Foam::labelList Foam::particleHolders::timesSent
-(
-    const label nOwned,
-    const labelListList& subMap
-)
-{
-    labelList n(nOwned, 0);
-    for (const labelList& toRank : subMap)
-    {
-        for (const label p : toRank) ++n[p];
-    }
-    return n;
-}
-
-
 Foam::labelListList Foam::particleHolders::sentFlags
 (
     const label nOwned,
     const labelListList& subMap
 )
 {
+    labelList nSent(nOwned, 0);
+    for (const labelList& toRank : subMap)
+    {
+        for (const label p : toRank) ++nSent[p];
+    }
+    forAll(nSent, p)
+    {
+        if (nSent[p] == 0)
+        {
+            FatalErrorInFunction
+                << "owned particle " << p << " is sent to no processor"
+                << abort(FatalError);
+        }
+    }
     // the lowest rank a particle is sent to counts it
-    const labelList nSent(timesSent(nOwned, subMap));
     boolList first;
     first.setSize(nOwned, true);
     labelListList flags(subMap.size());
@@ -51,6 +49,7 @@ Foam::particleHolders::particleHolders
 (
     const label nOwned,
     labelListList&& subMap,
+    const labelListList& sentFlags,
     labelListList&& constructMap,
     const labelUList& heldFlags
 )
@@ -61,19 +60,20 @@ Foam::particleHolders::particleHolders
     counted_(heldFlags.size()),
     nOwnedShared_(0)
 {
-    // the owner's compact list: its shared particles in owned order
-    const labelList nSent(timesSent(nOwned, map_.subMap()));
+    // the owner's compact list: its shared particles, numbered where the
+    // one rank that counts each is sent it
+    const labelListList& sends = map_.subMap();
     labelList ownedShared(nOwned, -1);
-    forAll(nSent, p)
+    forAll(sends, rank)
     {
-        // every owned particle must reach a holder
-        if (nSent[p] == 0)
+        forAll(sends[rank], i)
         {
-            FatalErrorInFunction
-                << "owned particle " << p << " is sent to no processor"
-                << abort(FatalError);
+            const label f = sentFlags[rank][i];
+            if ((f & countedFlag) && (f & sharedFlag))
+            {
+                ownedShared[sends[rank][i]] = nOwnedShared_++;
+            }
         }
-        if (nSent[p] > 1) ownedShared[p] = nOwnedShared_++;
     }
     // the holder's: its shared particles in held order
     labelList heldShared(heldFlags.size(), -1);
@@ -90,7 +90,6 @@ Foam::particleHolders::particleHolders
     sharedHeld_.transfer(sharedHeld);
 
     // both maps list the particles in the order they are sent
-    const labelListList& sends = map_.subMap();
     const labelListList& lands = map_.constructMap();
     labelListList sharedSubMap(sends.size()), sharedConstructMap(lands.size());
     forAll(sends, rank)

@@ -123,27 +123,24 @@ void Foam::voidFractionModel::combineSums
     const direction nA = pTraits<TypeA>::nComponents;
     const direction nB = pTraits<TypeB>::nComponents;
     static_assert(nA + nB <= 6, "two sums of at most six components");
-    if (!Pstream::parRun()) return;
 
-    // a symmTensor only carries the six sums through the exchange; when
-    // each particle has its holders, only those other ranks hold too
-    const bool distributed = holders_.distributed();
-    const labelList& shared = holders_.sharedHeld();
-    List<symmTensor> both(distributed ? shared.size() : a.size(), Zero);
-    forAll(both, i)
-    {
-        const label p = distributed ? shared[i] : i;
-        for (direction d = 0; d < nA; ++d) both[i][d] = component(a[p], d);
-        for (direction d = 0; d < nB; ++d) both[i][nA + d] = component(b[p], d);
-    }
-    if (distributed) holders_.combineShared(both, plusEqOp<symmTensor>());
-    else holders_.combine(both, plusEqOp<symmTensor>());
-    forAll(both, i)
-    {
-        const label p = distributed ? shared[i] : i;
-        for (direction d = 0; d < nA; ++d) setComponent(a[p], d) = both[i][d];
-        for (direction d = 0; d < nB; ++d) setComponent(b[p], d) = both[i][nA + d];
-    }
+    // a symmTensor only carries the six sums through the exchange
+    holders_.combine<symmTensor>
+    (
+        a.size(), plusEqOp<symmTensor>(),
+        [&](const label p)
+        {
+            symmTensor both(Zero);
+            for (direction d = 0; d < nA; ++d) both[d] = component(a[p], d);
+            for (direction d = 0; d < nB; ++d) both[nA + d] = component(b[p], d);
+            return both;
+        },
+        [&](const label p, const symmTensor& both)
+        {
+            for (direction d = 0; d < nA; ++d) setComponent(a[p], d) = both[d];
+            for (direction d = 0; d < nB; ++d) setComponent(b[p], d) = both[nA + d];
+        }
+    );
 }
 
 

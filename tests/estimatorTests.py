@@ -168,14 +168,21 @@ def test_kernel_reference():
     print("kernel against an independent evaluation of the seed's Gaussian, walls reflected")
     R = 0.0005
     b, cutoff = 0.004, 3
-    walls = [(0, 0.0), (0, L), (1, 0.0), (1, L), (2, 0.0), (2, L)]
-    for name, case in (
+    # a side whose far faces' normals come out of the face areas a few ulp
+    # off the axes (the face centre, a mean of four equal coordinates, is
+    # not the coordinate): their mirrors must count as exact ones do
+    Lodd = 0.10988439379638951
+    for name, case, side in (
         ("cartesian (1D factors)", new_case(os.path.join(WORK, "est-kref"),
-                                            box_block_mesh(LO, HI, (10, 10, 10), grading=(2, 1, 1)))),
-        ("tetrahedral (walk)", tet_case(os.path.join(WORK, "est-kref-tet")))):
+                                            box_block_mesh(LO, HI, (10, 10, 10), grading=(2, 1, 1))), L),
+        ("cartesian, inexact far normals", new_case(os.path.join(WORK, "est-kref-odd"),
+                                                    box_block_mesh(LO, (Lodd,) * 3, (18, 18, 18))), Lodd),
+        ("tetrahedral (walk)", tet_case(os.path.join(WORK, "est-kref-tet")), L)):
+        walls = [(0, 0.0), (0, side), (1, 0.0), (1, side), (2, 0.0), (2, side)]
         V = cell_volumes(case)
         C = cell_centres(case)
-        for where, c in (("by a corner", (0.002, 0.0035, 0.029)), ("inside", (0.014, 0.016, 0.015))):
+        corner = (0.002, 0.0035, side - 0.001)
+        for where, c in (("by a corner", corner), ("inside", (0.014, 0.016, 0.015))):
             write_dump(os.path.join(case, "one.dump"), [c], [R])
             got = model_solid(case, "one.dump", "kernel", V, "bandwidth %r; cutoff %d;" % (b, cutoff))
             want = gaussian_reference(C, V, c, b, cutoff * b, walls)
@@ -183,9 +190,9 @@ def test_kernel_reference():
             near("%s, particle %s: cell volumes = reference (max rel to particle)" % (name, where),
                  max(abs(g / Vp - w) for g, w in zip(got, want)), 0, 1e-12)
         # without reflection the wall cells get less
-        write_dump(os.path.join(case, "one.dump"), [(0.002, 0.0035, 0.029)], [R])
+        write_dump(os.path.join(case, "one.dump"), [corner], [R])
         flat = model_solid(case, "one.dump", "kernel", V, "bandwidth %r; reflectAtWalls false;" % b)
-        want_flat = gaussian_reference(C, V, (0.002, 0.0035, 0.029), b, cutoff * b, [])
+        want_flat = gaussian_reference(C, V, corner, b, cutoff * b, [])
         near("%s, no reflection: = reference without images" % name,
              max(abs(g / sphere_volume(R) - w) for g, w in zip(flat, want_flat)), 0, 1e-12)
 

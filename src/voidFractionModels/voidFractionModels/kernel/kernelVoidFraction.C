@@ -208,7 +208,16 @@ void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bo
         return;
     }
     walls_.setSize(normals.size());
-    forAll(walls_, i) walls_[i] = wallPlane{normals[order[i]], offsets[order[i]]};
+    forAll(walls_, i)
+    {
+        const vector& n = normals[order[i]];
+        label axis = -1;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (mag(n[(d + 1) % 3]) < 1e-9 && mag(n[(d + 2) % 3]) < 1e-9) axis = d;
+        }
+        walls_[i] = wallPlane{n, offsets[order[i]], axis};
+    }
 
     const pointField& points = mesh.points();
     const labelListList& cellPoints = mesh.cellPoints();
@@ -240,43 +249,48 @@ void Foam::voidFractionModels::kernel::findImages
     images_.append(c);
     imageWall_.clear();
     imageWall_.append(-1);
-    nMirrors_ = 0;
-    // a centre in this mesh: only the walls its cell's kernel may reach
-    const uint64_t candidates = reachableWalls(celli, rc);
-    if (!candidates) return;
-    label nNear = 0;
-    forAll(walls_, w)
-    {
-        if (!((candidates >> w) & 1)) continue;
-        const wallPlane& P = walls_[w];
-        const scalar d = P.offset - (P.normal & c);
-        if (d < 0 || d >= rc || nNear == 3) continue;
-        ++nNear;
-        const label m = images_.size();
-        for (label i = 0; i < m; ++i)
+    forEachNearWall
+    (
+        c, celli, rc,
+        [&](const wallPlane& P, const label w)
         {
-            // no image of an image across the opposite wall of a slab
-            if (imageWall_[i] >= 0 && (walls_[imageWall_[i]].normal & P.normal) < -0.5) continue;
-            const point x = images_[i];
-            images_.append(x - 2*((P.normal & x) - P.offset)*P.normal);
-            imageWall_.append(w);
-        }
-    }
-    for (label i = 1; i < images_.size(); ++i)
-    {
-        const vector shift = images_[i] - c;
-        for (direction d = 0; d < 3; ++d)
-        {
-            if
-            (
-                shift[(d + 1) % 3] == 0 && shift[(d + 2) % 3] == 0
-             && nMirrors_[d] < 2
-            )
+            const label m = images_.size();
+            for (label i = 0; i < m; ++i)
             {
-                mirrors_[d][nMirrors_[d]++] = images_[i][d];
+                // no image of an image across the opposite wall of a slab
+                if (imageWall_[i] >= 0 && (walls_[imageWall_[i]].normal & P.normal) < -0.5)
+                {
+                    continue;
+                }
+                const point x = images_[i];
+                images_.append(x - 2*((P.normal & x) - P.offset)*P.normal);
+                imageWall_.append(w);
             }
         }
-    }
+    );
+}
+
+
+void Foam::voidFractionModels::kernel::findMirrors
+(
+    const point& c,
+    const label celli,
+    const scalar rc
+)
+{
+    // the images that differ from the particle in one direction: those
+    // across a wall normal to it (a corner's images are the products)
+    nMirrors_ = 0;
+    forEachNearWall
+    (
+        c, celli, rc,
+        [&](const wallPlane& P, const label)
+        {
+            const label d = P.axis;
+            if (d < 0 || nMirrors_[d] == 2) return;
+            mirrors_[d][nMirrors_[d]++] = c[d] - 2*(P.normal[d]*c[d] - P.offset)*P.normal[d];
+        }
+    );
 }
 
 
@@ -521,11 +535,7 @@ void Foam::voidFractionModels::kernel::distribute
         if (b_[p] > 0)
         {
             const scalar rc = cutoff_*b_[p];
-            // most particles reach no wall: no images to look for (a
-            // particle alone is on uniform planes, where only the mirror
-            // counts are read, never images_)
-            const bool alone = uniform_ && !reachableWalls(centreCells_[p], rc);
-            if (alone) nMirrors_ = 0;
+            if (locator_.isTensorGrid()) findMirrors(x[p], centreCells_[p], rc);
             else findImages(x[p], centreCells_[p], rc);
             const bool mirrored = nMirrors_[0] + nMirrors_[1] + nMirrors_[2] > 0;
             if (uniform_ && !mirrored && fixedWindowWeights(p, x[p], b_[p], rc)) {}

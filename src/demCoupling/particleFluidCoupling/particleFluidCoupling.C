@@ -267,7 +267,9 @@ Type Foam::particleFluidCoupling::localSumOverParticles(const UList<Type>& value
     {
         if (holders.counted(i)) sum += values[i];
     }
-    return sum;
+    // a copy, not the named sum: returned by name, the sum would be the
+    // caller's memory and each addition a store the next one waits for
+    return Type(sum);
 }
 
 

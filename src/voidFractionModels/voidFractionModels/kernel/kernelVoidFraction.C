@@ -395,10 +395,11 @@ bool Foam::voidFractionModels::kernel::fixedWindowWeights
 )
 {
     // four cells per direction whatever the window holds: fixed loops over
-    // local arrays, twelve Gaussians in three vectors; the cells beyond a
+    // local arrays, the particle's twelve Gaussians in one batch, its
+    // mirrors' (at most three walls) after them; the cells beyond a
     // shorter window repeat its last one and are never read
     label first[3], n[3];
-    scalar e[12], dist[12];
+    scalar e[24], dist[12];
     const scalar invB2 = 1/sqr(b);
     for (direction d = 0; d < 3; ++d)
     {
@@ -412,9 +413,29 @@ bool Foam::voidFractionModels::kernel::fixedWindowWeights
             e[4*d + k] = -dist[4*d + k]*invB2;
         }
     }
-    expBatch::expNonPositive(e, e, 12);
+    label nExp = 12;
     for (direction d = 0; d < 3; ++d)
     {
+        const scalar* xc = gridCentres_[d].cdata();
+        const label last = gridCentres_[d].size() - 1;
+        for (label j = 0; j < nMirrors_[d]; ++j)
+        {
+            for (label k = 0; k < 4; ++k)
+            {
+                e[nExp++] = -sqr(xc[min(first[d] + k, last)] - mirrors_[d][j])*invB2;
+            }
+        }
+    }
+    // a constant count for most particles: the batch's loop then unrolls
+    if (nExp == 12) expBatch::expNonPositive(e, e, 12);
+    else expBatch::expNonPositive(e, e, nExp);
+    label im = 12;
+    for (direction d = 0; d < 3; ++d)
+    {
+        for (label j = 0; j < nMirrors_[d]; ++j)
+        {
+            for (label k = 0; k < 4; ++k) e[4*d + k] += e[im++];
+        }
         // each cell's own width: the planes are uniform to round-off only
         const scalar* h = gridWidths_[d].cdata();
         const label last = gridWidths_[d].size() - 1;
@@ -537,8 +558,7 @@ void Foam::voidFractionModels::kernel::distribute
             const scalar rc = cutoff_*b_[p];
             if (locator_.isTensorGrid()) findMirrors(x[p], centreCells_[p], rc);
             else findImages(x[p], centreCells_[p], rc);
-            const bool mirrored = nMirrors_[0] + nMirrors_[1] + nMirrors_[2] > 0;
-            if (uniform_ && !mirrored && fixedWindowWeights(p, x[p], b_[p], rc)) {}
+            if (uniform_ && fixedWindowWeights(p, x[p], b_[p], rc)) {}
             else if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
             else walkWeights(p, x[p], b_[p], rc);
         }

@@ -119,13 +119,18 @@ Foam::voidFractionModels::kernel::kernel
     {
         for (direction d = 0; d < 3; ++d)
         {
+            // three cells more beyond the last: a fixed window of four
+            // reads them (and never uses them) without a bound check
             const scalarList& g = locator_.gridPlanes(d);
-            gridCentres_[d].setSize(g.size() - 1);
-            gridWidths_[d].setSize(g.size() - 1);
+            const label nCells = g.size() - 1;
+            gridCentres_[d].setSize(nCells + 3);
+            gridWidths_[d].setSize(nCells + 3);
             forAll(gridCentres_[d], i)
             {
-                gridCentres_[d][i] = 0.5*(g[i] + g[i + 1]);
-                gridWidths_[d][i] = g[i + 1] - g[i];
+                const scalar lo = i < nCells ? g[i] : g.last() + (i - nCells)*(g[nCells] - g[nCells - 1]);
+                const scalar hi = i < nCells ? g[i + 1] : lo + (g[nCells] - g[nCells - 1]);
+                gridCentres_[d][i] = 0.5*(lo + hi);
+                gridWidths_[d][i] = hi - lo;
             }
         }
     }
@@ -401,28 +406,29 @@ bool Foam::voidFractionModels::kernel::fixedWindowWeights
     label first[3], n[3];
     scalar e[24], dist[12];
     const scalar invB2 = 1/sqr(b);
+    const scalar* xc[3];
     for (direction d = 0; d < 3; ++d)
     {
-        n[d] = uniformWindow(locator_.gridPlanes(d), locator_.invSpacing(d), c[d], rc, first[d]);
+        const scalarList& g = locator_.gridPlanes(d);
+        n[d] = uniformWindow(g, locator_.invSpacing(d), c[d], rc, first[d]);
         if (n[d] > 4) return false;
-        const scalar* xc = gridCentres_[d].cdata();
-        const label last = gridCentres_[d].size() - 1;
+        // an empty window beyond the grid: read its last cells
+        first[d] = min(first[d], g.size() - 1);
+        xc[d] = gridCentres_[d].cdata() + first[d];
         for (label k = 0; k < 4; ++k)
         {
-            dist[4*d + k] = sqr(xc[min(first[d] + k, last)] - c[d]);
+            dist[4*d + k] = sqr(xc[d][k] - c[d]);
             e[4*d + k] = -dist[4*d + k]*invB2;
         }
     }
     label nExp = 12;
     for (direction d = 0; d < 3; ++d)
     {
-        const scalar* xc = gridCentres_[d].cdata();
-        const label last = gridCentres_[d].size() - 1;
         for (label j = 0; j < nMirrors_[d]; ++j)
         {
             for (label k = 0; k < 4; ++k)
             {
-                e[nExp++] = -sqr(xc[min(first[d] + k, last)] - mirrors_[d][j])*invB2;
+                e[nExp++] = -sqr(xc[d][k] - mirrors_[d][j])*invB2;
             }
         }
     }
@@ -437,9 +443,8 @@ bool Foam::voidFractionModels::kernel::fixedWindowWeights
             for (label k = 0; k < 4; ++k) e[4*d + k] += e[im++];
         }
         // each cell's own width: the planes are uniform to round-off only
-        const scalar* h = gridWidths_[d].cdata();
-        const label last = gridWidths_[d].size() - 1;
-        for (label k = 0; k < 4; ++k) e[4*d + k] *= h[min(first[d] + k, last)];
+        const scalar* h = gridWidths_[d].cdata() + first[d];
+        for (label k = 0; k < 4; ++k) e[4*d + k] *= h[k];
     }
 
     const label k0 = weights_.extend(n[0]*n[1]*n[2]);

@@ -264,6 +264,15 @@ def test_parallel_periodic():
         # conservation through images across processorCyclic patches, then the serial field
         field_checks("periodic box", case, c, r, model)
         serial_vs_parallel("periodic box", case, "p.dump", model, 1e-9 if model == "diffusion" else 1e-12)
+    # periodic in y only, split in x: each rank's grid spans y, so analytical
+    # wraps the particles centred on the rank by grid index, and the others
+    # (centred on the other rank) take images
+    cyc = {"y" + b: "type cyclic; neighbourPatch y%s;" % ("max" if b == "min" else "min") for b in ("min", "max")}
+    case = new_case(os.path.join(WORK, "est-parallel-periodic-y"), box_block_mesh(LO, HI, (10, 10, 10), patches=cyc))
+    c, r = random_spheres(1500, 0.0004, 0.0012, LO, HI, seed=17, periodic_axes=(1,))
+    write_dump(os.path.join(case, "p.dump"), c, r)
+    field_checks("box periodic in y", case, c, r, "analytical")
+    serial_vs_parallel("box periodic in y, split in x", case, "p.dump", "analytical", 1e-12)
 
 
 def test_bad_coefficients():

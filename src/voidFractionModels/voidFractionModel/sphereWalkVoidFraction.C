@@ -9,9 +9,41 @@ Foam::sphereWalkVoidFraction::sphereWalkVoidFraction
 )
 :
     voidFractionModel(modelType, dict, mesh),
-    overlap_(mesh)
+    overlap_(mesh),
+    gridWraps_(locator_.isTensorGrid() && !twoD_ && periodicShifts_.size())
 {
     if (twoD_) overlap_.setTwoDimensional(emptyDir_, thickness_);
+    const scalar tol = 1e-9*globalBounds_.mag();
+    for (direction d = 0; d < 3 && gridWraps_; ++d)
+    {
+        if (!periodicDirection_[d]) continue;
+        const scalarList& g = locator_.gridPlanes(d);
+        const scalar span = globalBounds_.span()[d];
+        gridWraps_ =
+            mag(g.first() - globalBounds_.min()[d]) < tol
+         && mag(g.last() - globalBounds_.max()[d]) < tol;
+        // every shift moves along d by the span or not at all
+        for (const vector& S : periodicShifts_)
+        {
+            if (mag(S[d]) > tol && mag(mag(S[d]) - span) > tol) gridWraps_ = false;
+        }
+    }
+}
+
+
+bool Foam::sphereWalkVoidFraction::gridWrapsSphere
+(
+    const point& c,
+    const scalar R,
+    const label centreCell
+) const
+{
+    bool cut[3];
+    scalar offset[3];
+    label low[3], high[3];
+    return
+        gridWraps_ && centreCell >= 0
+     && locator_.planeCuts(centreCell, c, R, cut, offset, low, high);
 }
 
 
@@ -20,7 +52,8 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     const label centreCell,
     const point& c,
     const scalar R,
-    const label maxCuts
+    const label maxCuts,
+    const bool wrap
 )
 {
     if (twoD_) return false;     // the one-go split is for spheres
@@ -28,6 +61,17 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     scalar offset[3];
     label low[3], high[3];
     if (!locator_.planeCuts(centreCell, c, R, cut, offset, low, high)) return false;
+    if (wrap && centreCell >= 0)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            // a side beyond the grid (-1) is its other end
+            if (!periodicDirection_[d] || !cut[d]) continue;
+            const label n = locator_.gridPlanes(d).size() - 1;
+            if (low[d] < 0) low[d] = n - 1;
+            if (high[d] < 0) high[d] = 0;
+        }
+    }
     const int cutMask = int(cut[0]) | int(cut[1]) << 1 | int(cut[2]) << 2;
     if (cutMask == 0)
     {

@@ -157,11 +157,10 @@ void Foam::voidFractionModel::computeRows
     const labelUList& centres
 )
 {
-    // without cyclic patches the particles are the entries (no copy)
+    // without periodic images the particles are the entries (no copy)
     const label n = x0.size();
-    const bool periodic = periodicShifts_.size();
     nParticles_ = n;
-    if (periodic) makeImages(x0, r0);
+    const bool periodic = periodicShifts_.size() && makeImages(x0, r0, centres);
     const UList<point>& x = periodic ? static_cast<const UList<point>&>(entries_) : x0;
     const UList<scalar>& r = periodic ? static_cast<const UList<scalar>&>(entryRadii_) : r0;
 

@@ -106,10 +106,11 @@ bool Foam::voidFractionModel::nearPeriodicSide
 }
 
 
-void Foam::voidFractionModel::makeImages
+bool Foam::voidFractionModel::makeImages
 (
     const UList<point>& x,
-    const scalarField& r
+    const scalarField& r,
+    const labelUList& centres
 )
 {
     const label n = x.size();
@@ -134,16 +135,33 @@ void Foam::voidFractionModel::makeImages
         parent_.append(p);
         shift_.append(S);
     };
+    // the particles are copied into the entries only once one has an
+    // image: in many steps none has (a model that wraps, a bed clear of
+    // the periodic sides)
+    label nCopied = 0;
+    auto copyUpTo = [&](const label end)
+    {
+        for (; nCopied < end; ++nCopied)
+        {
+            firstEntry_[nCopied] = entries_.size();
+            add(x[nCopied], nCopied, Zero);
+        }
+    };
     forAll(x, p)
     {
-        firstEntry_[p] = entries_.size();
-        add(x[p], p, Zero);
         const scalar reach = imageReach(r[p]);
-        if (!nearPeriodicSide(x[p], reach)) continue;
+        if (!nearPeriodicSide(x[p], reach) || !needsImages(x[p], r[p], centres[p])) continue;
         for (const vector& S : periodicShifts_)
         {
-            if (overlaps(x[p] + S, reach)) add(x[p] + S, p, S);
+            if (overlaps(x[p] + S, reach))
+            {
+                copyUpTo(p + 1);
+                add(x[p] + S, p, S);
+            }
         }
     }
+    if (entries_.empty()) return false;
+    copyUpTo(n);
     firstEntry_[n] = entries_.size();
+    return true;
 }

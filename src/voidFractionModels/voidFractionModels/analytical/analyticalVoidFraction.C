@@ -23,6 +23,17 @@ Foam::voidFractionModels::analytical::analytical
 {}
 
 
+bool Foam::voidFractionModels::analytical::needsImages
+(
+    const point& c,
+    const scalar r,
+    const label centreCell
+) const
+{
+    return !gridWrapsSphere(c, r, centreCell);
+}
+
+
 void Foam::voidFractionModels::analytical::distribute
 (
     const UList<point>& x,
@@ -33,7 +44,7 @@ void Foam::voidFractionModels::analytical::distribute
     forAll(x, p)
     {
         const label seed = centreCells_[p];
-        if (locator_.isTensorGrid() && splitOnGrid(seed, x[p], r[p]))
+        if (locator_.isTensorGrid() && splitOnGrid(seed, x[p], r[p], 3, gridWraps_ && withoutImages(p)))
         {
             // done
         }

@@ -10,28 +10,29 @@ Foam::sphereWalkVoidFraction::sphereWalkVoidFraction
 :
     voidFractionModel(modelType, dict, mesh),
     overlap_(mesh),
-    gridWraps_(locator_.isTensorGrid() && !twoD_ && periodicShifts_.size())
+    gridWraps_(0)
 {
     if (twoD_) overlap_.setTwoDimensional(emptyDir_, thickness_);
+    if (!locator_.isTensorGrid() || twoD_) return;
     const scalar tol = 1e-9*globalBounds_.mag();
-    for (direction d = 0; d < 3 && gridWraps_; ++d)
+    for (direction d = 0; d < 3; ++d)
     {
         if (!periodicDirection_[d]) continue;
         const scalarList& g = locator_.gridPlanes(d);
         const scalar span = globalBounds_.span()[d];
-        gridWraps_ =
+        bool wraps =
             mag(g.first() - globalBounds_.min()[d]) < tol
          && mag(g.last() - globalBounds_.max()[d]) < tol;
-        // every shift moves along d by the span or not at all
         for (const vector& S : periodicShifts_)
         {
-            if (mag(S[d]) > tol && mag(mag(S[d]) - span) > tol) gridWraps_ = false;
+            if (mag(S[d]) > tol && mag(mag(S[d]) - span) > tol) wraps = false;
         }
+        if (wraps) gridWraps_ |= 1u << d;
     }
 }
 
 
-bool Foam::sphereWalkVoidFraction::gridWrapsSphere
+unsigned Foam::sphereWalkVoidFraction::gridWrapsSphere
 (
     const point& c,
     const scalar R,
@@ -42,8 +43,9 @@ bool Foam::sphereWalkVoidFraction::gridWrapsSphere
     scalar offset[3];
     label low[3], high[3];
     return
-        gridWraps_ && centreCell >= 0
-     && locator_.planeCuts(centreCell, c, R, cut, offset, low, high);
+        (gridWraps_ && centreCell >= 0
+      && locator_.planeCuts(centreCell, c, R, cut, offset, low, high))
+      ? gridWraps_ : 0;
 }
 
 
@@ -66,7 +68,7 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
         for (direction d = 0; d < 3; ++d)
         {
             // a side beyond the grid (-1) is its other end
-            if (!periodicDirection_[d] || !cut[d]) continue;
+            if (!((gridWraps_ >> d) & 1) || !cut[d]) continue;
             const label n = locator_.gridPlanes(d).size() - 1;
             if (low[d] < 0) low[d] = n - 1;
             if (high[d] < 0) high[d] = 0;

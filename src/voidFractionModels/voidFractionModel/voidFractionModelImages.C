@@ -147,12 +147,18 @@ bool Foam::voidFractionModel::makeImages
             add(x[nCopied], nCopied, Zero);
         }
     };
+    const scalar tol = 1e-9*globalBounds_.mag();
     forAll(x, p)
     {
         const scalar reach = imageReach(r[p]);
-        if (!nearPeriodicSide(x[p], reach) || !needsImages(x[p], r[p], centres[p])) continue;
+        if (!nearPeriodicSide(x[p], reach)) continue;
+        const unsigned wrapped = wrappedDirections(x[p], r[p], centres[p]);
         for (const vector& S : periodicShifts_)
         {
+            // a shift along wrapped directions only: the model's own wrap
+            unsigned along = 0;
+            for (direction d = 0; d < 3; ++d) along |= unsigned(mag(S[d]) > tol) << d;
+            if ((along & ~wrapped) == 0) continue;
             if (overlaps(x[p] + S, reach))
             {
                 copyUpTo(p + 1);

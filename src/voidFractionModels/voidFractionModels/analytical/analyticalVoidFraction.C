@@ -23,14 +23,14 @@ Foam::voidFractionModels::analytical::analytical
 {}
 
 
-bool Foam::voidFractionModels::analytical::needsImages
+unsigned Foam::voidFractionModels::analytical::wrappedDirections
 (
     const point& c,
     const scalar r,
     const label centreCell
 ) const
 {
-    return !gridWrapsSphere(c, r, centreCell);
+    return gridWrapsSphere(c, r, centreCell);
 }
 
 
@@ -44,7 +44,7 @@ void Foam::voidFractionModels::analytical::distribute
     forAll(x, p)
     {
         const label seed = centreCells_[p];
-        if (locator_.isTensorGrid() && splitOnGrid(seed, x[p], r[p], 3, gridWraps_ && withoutImages(p)))
+        if (locator_.isTensorGrid() && splitOnGrid(seed, x[p], r[p], 3, gridWraps_ && isParticleEntry(p)))
         {
             // done
         }

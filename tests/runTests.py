@@ -10,7 +10,7 @@ import sys
 
 import checks
 from checks import WORK, check, field_checks, near, parallel_cases, run_model, serial_vs_parallel
-from foamCase import (ROOT, box_block_mesh, cell_volumes, new_case, parse_report,
+from foamCase import (ROOT, box_block_mesh, cell_centres, cell_volumes, new_case, parse_report,
                       random_spheres, read_scalar_field, set_coupling, sh, sphere_volume,
                       tet_case, write_dump)
 
@@ -83,6 +83,38 @@ def test_closed_forms():
     m = re.search(r"volume outside (\S+)", out)
     near("sphere centred on a wall: V/2 reported outside (rel)",
          float(m.group(1)) / (sphere_volume(R) / 2) if m else None, 1, 1e-12)
+
+
+def test_thin_neighbour():
+    print("graded grid: a sphere that crosses a thin neighbour cell whole, against spherical slabs")
+    # widths grow 20-fold over 10 cells in x (0.44 mm to 8.8 mm); y and z uniform, 3 mm
+    case = new_case(os.path.join(WORK, "thinNeighbour"), box_block_mesh(LO, HI, (10, 10, 10), grading=(20, 1, 1)))
+    V = cell_volumes(case)
+    C = cell_centres(case)
+    layer = {}                          # cell centres' x, grouped per layer (full precision kept)
+    for x in C:
+        layer.setdefault(round(x[0], 9), x[0])
+    keys = sorted(layer)
+    planes = [0.0]
+    for k in keys:
+        planes.append(2 * layer[k] - planes[-1])
+    R = 0.001
+    # centre 0.05 mm above plane 3: its piece below crosses cell 2 (0.86 mm) into cell 1
+    c = (planes[3] + 0.00005, 0.0165, 0.0165)
+    write_dump(os.path.join(case, "one.dump"), [c], [R])
+    rc, _ = run_model(case, "one.dump", "analytical")
+    alpha = read_scalar_field(os.path.join(case, "0", "voidfraction"))
+
+    def slab(a, b):
+        a, b = max(a - c[0], -R), min(b - c[0], R)
+        return 0.0 if b <= a else math.pi * ((R * R * b - b ** 3 / 3) - (R * R * a - a ** 3 / 3))
+    got = [0.0] * 10
+    for a, v, x in zip(alpha, V, C):
+        got[keys.index(round(x[0], 9))] += (1 - a) * v
+    want = [slab(planes[i], planes[i + 1]) for i in range(10)]
+    check("the sphere reaches three x-layers", sum(w > 0 for w in want) == 3)
+    near("per x-layer solid = spherical slab volume (max rel to the sphere)",
+         max(abs(g - w) for g, w in zip(got, want)) / sphere_volume(R), 0, 1e-12)
 
 
 def test_fast_against_general():
@@ -255,7 +287,7 @@ def test_keep_weights():
 
 
 def main():
-    checks.run([test_closed_forms, test_meshes, test_fast_against_general, test_cyclic,
+    checks.run([test_closed_forms, test_thin_neighbour, test_meshes, test_fast_against_general, test_cyclic,
                 test_alpha_min, test_parallel, test_keep_weights, test_liggghts_in_process,
                 test_bad_input], sys.argv[1:])
     return checks.summary("models")

@@ -44,7 +44,7 @@ unsigned Foam::sphereWalkVoidFraction::gridWrapsSphere
     label low[3], high[3];
     return
         (gridWraps_ && centreCell >= 0
-      && locator_.planeCuts(centreCell, c, R, cut, offset, low, high))
+      && locator_.planeCuts(centreCell, c, R, cut, offset, low, high, gridWraps_))
       ? gridWraps_ : 0;
 }
 
@@ -62,17 +62,9 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     bool cut[3];
     scalar offset[3];
     label low[3], high[3];
-    if (!locator_.planeCuts(centreCell, c, R, cut, offset, low, high)) return false;
-    if (wrap && centreCell >= 0)
+    if (!locator_.planeCuts(centreCell, c, R, cut, offset, low, high, wrap ? gridWraps_ : 0))
     {
-        for (direction d = 0; d < 3; ++d)
-        {
-            // a side beyond the grid (-1) is its other end
-            if (!((gridWraps_ >> d) & 1) || !cut[d]) continue;
-            const label n = locator_.gridPlanes(d).size() - 1;
-            if (low[d] < 0) low[d] = n - 1;
-            if (high[d] < 0) high[d] = 0;
-        }
+        return false;
     }
     const int cutMask = int(cut[0]) | int(cut[1]) << 1 | int(cut[2]) << 2;
     if (cutMask == 0)

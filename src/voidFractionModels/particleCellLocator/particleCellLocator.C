@@ -86,6 +86,10 @@ bool Foam::particleCellLocator::detectTensorGrid()
                 uniform = uniform && mag(g[i] - g[i - 1] - h) < 1e-9*h;
             }
             invSpacing_[d] = uniform ? 1/h : 0;
+            for (label i = 1; i < g.size(); ++i)
+            {
+                minWidth_ = min(minWidth_, g[i] - g[i - 1]);
+            }
         }
     }
     return ok;
@@ -95,7 +99,8 @@ bool Foam::particleCellLocator::detectTensorGrid()
 Foam::particleCellLocator::particleCellLocator(const fvMesh& mesh)
 :
     mesh_(mesh),
-    invSpacing_{0, 0, 0}
+    invSpacing_{0, 0, 0},
+    minWidth_(GREAT)
 {
     // decomposed cases: a processor's part of a box mesh is a box mesh too
     if (detectTensorGrid())
@@ -201,4 +206,26 @@ Foam::label Foam::particleCellLocator::planesCrossed
         n += (c[d] - g[index[d]] < R) + (g[index[d] + 1] - c[d] < R);
     }
     return n;
+}
+
+
+bool Foam::particleCellLocator::piecesFit
+(
+    const scalar R,
+    const bool cut[3],
+    const scalar offset[3],
+    const FixedList<label, 3> low,
+    const FixedList<label, 3> high
+) const
+{
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!cut[d]) continue;
+        // the piece beyond the plane, offset from the centre, reaches
+        // R - |offset| into the cell on its side
+        const scalarList& g = grid_[d];
+        const label next = (offset[d] <= 0) ? low[d] : high[d];
+        if (next >= 0 && R - mag(offset[d]) > g[next + 1] - g[next]) return false;
+    }
+    return true;
 }

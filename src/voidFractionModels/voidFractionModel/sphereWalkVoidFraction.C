@@ -43,8 +43,7 @@ unsigned Foam::sphereWalkVoidFraction::gridWrapsSphere
     scalar offset[3];
     label low[3], high[3];
     return
-        (gridWraps_ && centreCell >= 0
-      && locator_.planeCuts(centreCell, c, R, cut, offset, low, high, gridWraps_))
+        (gridWraps_ && centreCell >= 0 && gridPieces(centreCell, c, R, true, cut, offset, low, high))
       ? gridWraps_ : 0;
 }
 
@@ -62,10 +61,7 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     bool cut[3];
     scalar offset[3];
     label low[3], high[3];
-    if (!locator_.planeCuts(centreCell, c, R, cut, offset, low, high, wrap ? gridWraps_ : 0))
-    {
-        return false;
-    }
+    if (!gridPieces(centreCell, c, R, wrap, cut, offset, low, high)) return false;
     const int cutMask = int(cut[0]) | int(cut[1]) << 1 | int(cut[2]) << 2;
     if (cutMask == 0)
     {

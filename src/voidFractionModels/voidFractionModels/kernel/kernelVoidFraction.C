@@ -412,8 +412,9 @@ bool Foam::voidFractionModels::kernel::fixedWindowWeights
         const scalarList& g = locator_.gridPlanes(d);
         n[d] = uniformWindow(g, locator_.invSpacing(d), c[d], rc, first[d]);
         if (n[d] > 4) return false;
-        // an empty window beyond the grid: read its last cells
-        first[d] = min(first[d], g.size() - 1);
+        // an empty window beyond the grid: read its last cell and the
+        // three padded ones after it, never past them
+        first[d] = min(first[d], g.size() - 2);
         xc[d] = gridCentres_[d].cdata() + first[d];
         for (label k = 0; k < 4; ++k)
         {

@@ -58,20 +58,20 @@ inline Foam::label ballRows
     {
         for (Foam::label ky = 0; ky < n[1]; ++ky)
         {
-            // the squared distances along x fall, then rise: the cells in
-            // the ball are one run [lo, hi) of the row
+            // every cell of the row is written and only those in the ball
+            // are kept: no branch on the data, whose outcome the branch
+            // predictor cannot know
             const Foam::scalar left = rc2 - (dy[ky] + dz[kz]);
-            Foam::label lo = 0, hi = n[0];
-            while (lo < hi && dx[lo] > left) ++lo;
-            while (hi > lo && dx[hi - 1] > left) --hi;
-            if (lo == hi) continue;
             const Foam::scalar fyz = fy[ky]*fz[kz];
             const Foam::label* row = locator.gridRow(first[0], first[1] + ky, first[2] + kz);
-            for (Foam::label kx = lo; kx < hi; ++kx)
+            for (Foam::label kx = 0; kx < n[0]; ++kx)
             {
+                const Foam::scalar f = fx[kx]*fyz;
+                const bool inside = dx[kx] <= left;
                 cells[m] = row[kx];
-                fractions[m] = fx[kx]*fyz;
-                sum += fractions[m++];
+                fractions[m] = f;
+                sum += inside ? f : 0;
+                m += inside;
             }
         }
     }

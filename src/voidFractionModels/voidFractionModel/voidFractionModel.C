@@ -43,7 +43,9 @@ Foam::voidFractionModel::voidFractionModel
         mesh,
         dimensionedScalar("one", dimless, 1.0),
         zeroGradientFvPatchScalarField::typeName
-    )
+    ),
+    spreadAsMade_(false),
+    rowsSpread_(false)
 {
     if (!(keepDistance_ >= 0) || !std::isfinite(keepDistance_))
     {
@@ -220,6 +222,19 @@ void Foam::voidFractionModel::update
         hints_[i] = locator_.findCell(x0[i], hints_[i]);
     }
     selectMoved(x0, r);
+    particleVolumes_.setSize(n);
+    forAll(particleVolumes_, p)
+    {
+        particleVolumes_[p] = particleVolume(r[p]);
+    }
+    spreadAsMade_ = moved_.size() == n && keepDistance_ == 0 && !smooths();
+    rowsSpread_ = false;
+    if (spreadAsMade_)
+    {
+        solid_ = Zero;
+        fractionSum_.setSize(n);
+        fractionSum_ = Zero;
+    }
     if (moved_.size() == n)
     {
         computeRows(x0, r, hints_);
@@ -238,12 +253,7 @@ void Foam::voidFractionModel::update
 
     stats_ = statistics();
     stats_.nKept = n - moved_.size();
-    particleVolumes_.setSize(n);
-    forAll(particleVolumes_, p)
-    {
-        particleVolumes_[p] = particleVolume(particles.radii()[p]);
-    }
-    spreadVolumes();
+    if (!rowsSpread_) spreadVolumes();
     const label nOver = collectStatistics(particles);
     stats_.movedVolume = limitSolidFraction(nOver);
 

@@ -547,15 +547,20 @@ void Foam::voidFractionModels::kernel::distribute
 
     // a kernel that reaches no cell centre (bandwidth far below the cell
     // size) leaves the particle in its cell
-    auto normalise = [&](const label p)
+    auto normalise = [&](const label p, const bool spreadNow)
     {
-        if (sums_[p] > 0) weights_.scale(p, 1/sums_[p]);
+        scalar s = 1;
+        if (sums_[p] > 0) s = 1/sums_[p];
         else if (centreCells_[p] >= 0) weights_.setFraction(weights_.begin(p), 1);
+        if (spreadNow) spreadRow(p, s);
+        else if (sums_[p] > 0) weights_.scale(p, s);
     };
 
-    // whole particles are normalised while their row is in cache;
-    // otherwise over all ranks and images once all rows are made
+    // whole particles are normalised (and spread, where allowed) while
+    // their row is in cache; otherwise over all ranks and images once all
+    // rows are made
     const bool whole = entriesAreWhole(n);
+    const bool spread = spreadsRows(n);
     forAll(x, p)
     {
         sums_[p] = 0;
@@ -569,11 +574,11 @@ void Foam::voidFractionModels::kernel::distribute
             else walkWeights(p, x[p], b_[p], rc);
         }
         weights_.endParticle();
-        if (whole) normalise(p);
+        if (whole) normalise(p, spread);
     }
     if (!whole)
     {
         combineOverGroup(sums_, plusEqOp<scalar>());
-        forAll(x, p) normalise(p);
+        forAll(x, p) normalise(p, false);
     }
 }

@@ -147,17 +147,32 @@ void Foam::liggghtsCoupling::run(const label nSteps)
 Foam::particleData Foam::liggghtsCoupling::particles() const
 {
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    LAMMPS_NS::Domain& domain = *lmp_->domain;
     const label n = atom.nlocal;
     List<point> x(n);
     List<vector> v(n);
     List<scalar> r(n);
     List<label> id(n);
+    // an orthogonal box leaves a position within its periodic bounds as it
+    // is: only the others go through remap
+    const int periodic[3] = {domain.xperiodic, domain.yperiodic, domain.zperiodic};
+    auto inBox = [&](const double* xi)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (periodic[d] && !(xi[d] >= domain.boxlo[d] && xi[d] < domain.boxhi[d]))
+            {
+                return false;
+            }
+        }
+        return !domain.triclinic;
+    };
     for (label i = 0; i < n; ++i)
     {
         // between re-neighbourings LIGGGHTS lets atoms drift past a
         // periodic side; the mesh sees them wrapped into the box
         double xi[3] = {atom.x[i][0], atom.x[i][1], atom.x[i][2]};
-        lmp_->domain->remap(xi);
+        if (!inBox(xi)) domain.remap(xi);
         x[i] = point(xi[0], xi[1], xi[2]);
         v[i] = vector(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
         r[i] = atom.radius[i];

@@ -101,41 +101,35 @@ Foam::particleHolders Foam::particleDistributor::distribute
     List<pointField> receivedX(nProcs);
     List<scalarField> receivedR(nProcs);
     List<vectorField> receivedU(nProcs);
+    const label me = Pstream::myProcNo();
     forAll(sends, rank)
     {
         const labelList& send = subMap[rank];
         if (send.empty()) continue;
         labelList ids(UIndirectList<label>(owned.ids(), send));
-        pointField sx(x, send);
-        scalarField sr(r, send);
-        vectorField su(withU ? vectorField(v, send) : vectorField());
-        if (rank == Pstream::myProcNo())
+        if (rank == me)
         {
             receivedIds[rank].transfer(ids);
-            receivedX[rank].transfer(sx);
-            receivedR[rank].transfer(sr);
-            receivedU[rank].transfer(su);
             receivedFlags[rank] = flags[rank];
+            continue;
         }
-        else
-        {
-            UOPstream os(rank, buffers);
-            os << ids << sx << sr << su << flags[rank];
-        }
+        UOPstream os(rank, buffers);
+        os << ids << pointField(x, send) << scalarField(r, send)
+           << (withU ? vectorField(v, send) : vectorField()) << flags[rank];
     }
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
     label nHeld = 0, nWithU = 0;
     forAll(receivedIds, rank)
     {
-        if (rank != Pstream::myProcNo() && recvSizes[rank])
+        if (rank != me && recvSizes[rank])
         {
             UIPstream is(rank, buffers);
             is >> receivedIds[rank] >> receivedX[rank] >> receivedR[rank] >> receivedU[rank]
                >> receivedFlags[rank];
         }
         nHeld += receivedIds[rank].size();
-        nWithU += receivedU[rank].size();
+        nWithU += (rank == me && withU) ? receivedIds[rank].size() : receivedU[rank].size();
     }
     if (nWithU && nWithU != nHeld)
     {
@@ -159,17 +153,24 @@ Foam::particleHolders Foam::particleDistributor::distribute
     k = 0;
     forAll(receivedIds, rank)
     {
+        // the particles kept here come straight from owned
+        const bool mine = (rank == me);
+        const labelList& send = subMap[me];
+        const pointField& fromX = mine ? x : receivedX[rank];
+        const scalarField& fromR = mine ? r : receivedR[rank];
+        const vectorField& fromU = mine ? v : receivedU[rank];
         labelList& construct = constructMap[rank];
         construct.setSize(receivedIds[rank].size());
         forAll(construct, i)
         {
             const label to = slot[k++];
+            const label from = mine ? send[i] : i;
             construct[i] = to;
-            heldX[to] = receivedX[rank][i];
-            heldR[to] = receivedR[rank][i];
+            heldX[to] = fromX[from];
+            heldR[to] = fromR[from];
             heldIds[to] = receivedIds[rank][i];
             heldFlags[to] = receivedFlags[rank][i];
-            if (nWithU) heldU[to] = receivedU[rank][i];
+            if (nWithU) heldU[to] = fromU[from];
         }
     }
 

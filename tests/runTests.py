@@ -30,6 +30,8 @@ def test_meshes():
         for model in ("centroid", "analytical"):
             field_checks(name, case, *spheres, model)
 
+    graded_centroid_reference()
+
     # sheared hexahedra: an affine map of the box, particles mapped alike
     case = new_case(os.path.join(WORK, "sheared"), box_block_mesh(LO, HI, (9, 9, 9)))
     shear = lambda p: (p[0] + 0.3 * p[1], p[1], p[2] + 0.2 * p[0])
@@ -83,6 +85,36 @@ def test_closed_forms():
     m = re.search(r"volume outside (\S+)", out)
     near("sphere centred on a wall: V/2 reported outside (rel)",
          float(m.group(1)) / (sphere_volume(R) / 2) if m else None, 1, 1e-12)
+
+
+def graded_centroid_reference():
+    """On a graded grid (non-uniform planes in all three directions) each
+    sphere's volume lies in the cell holding its centre, that cell found
+    here from the mesh's own points by bisection."""
+    import bisect
+    case = new_case(os.path.join(WORK, "gradedCentroid"), box_block_mesh(LO, HI, (12, 9, 10), grading=(4, 0.3, 2)),
+                    coupling="voidFractionModel centroid;\nalphaMin 1e-6;\n")
+    text = open(os.path.join(case, "constant", "polyMesh", "points")).read()
+    points = [[float(v) for v in m] for m in
+              re.findall(r"^\([ \t]*(\S+)[ \t]+(\S+)[ \t]+(\S+)[ \t]*\)$", text, re.M)]
+    planes = [sorted(set(round(p[d], 12) for p in points)) for d in range(3)]
+    check("graded planes: 13 x 10 x 11, not uniform",
+          [len(g) for g in planes] == [13, 10, 11]
+          and max(b - a for a, b in zip(planes[0], planes[0][1:])) > 2 * min(b - a for a, b in zip(planes[0], planes[0][1:])))
+
+    def ijk(x):
+        return tuple(min(bisect.bisect_right(planes[d], x[d]) - 1, len(planes[d]) - 2) for d in range(3))
+    cell_of = {ijk(x): i for i, x in enumerate(cell_centres(case))}
+    c, r = random_spheres(400, 0.0002, 0.0005, LO, HI, seed=21)
+    alpha = field_checks("graded (reference)", case, c, r, "centroid", alpha_min=1e-6)
+    if alpha is None:
+        return
+    V = cell_volumes(case)
+    want = [0.0] * len(V)
+    for x, ri in zip(c, r):
+        want[cell_of[ijk(x)]] += sphere_volume(ri)
+    near("graded centroid: per-cell solid = volume of the spheres centred in it, max rel to a sphere",
+         max(abs((1 - a) * v - w) for a, v, w in zip(alpha, V, want)) / sphere_volume(0.0002), 0, 1e-9)
 
 
 def test_thin_neighbour():

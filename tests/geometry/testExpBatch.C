@@ -4,6 +4,8 @@
 #include "expBatch.H"
 #include "testHarness.H"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 #include <vector>
@@ -64,6 +66,33 @@ int main()
         }
     }
     near("batches of 0 to 19 values against std::exp", worstBatch, 0, 1e-15);
+
+    // expClamped: either sign within the bound, the bound beyond it, and
+    // batches against the scalar function
+    double worstClamped = 0, worstClampedBatch = 0;
+    std::uniform_real_distribution<double> signedArgs(-700, 700);
+    for (int i = 0; i < 2000000; ++i)
+    {
+        const double a = signedArgs(rng);
+        worstClamped = std::max(worstClamped, std::fabs(expBatch::expClamped(a, 700)/std::exp(a) - 1));
+    }
+    near("expClamped: relative error on [-700, 700] (2e6 samples)", worstClamped, 0, 1e-15);
+    near("expClamped(0) = 1 exactly", expBatch::expClamped(0.0, 150), 1, 0);
+    near("expClamped(200, 150) = exp(150)", expBatch::expClamped(200.0, 150)/std::exp(150.0), 1, 1e-15);
+    near("expClamped(-1e300, 150) = exp(-150)", expBatch::expClamped(-1e300, 150)/std::exp(-150.0), 1, 1e-15);
+    near("expClamped(1e300, 700) is finite: exp(700)", expBatch::expClamped(1e300, 700)/std::exp(700.0), 1, 1e-15);
+    for (int n = 0; n < 20; ++n)
+    {
+        std::vector<double> x(n), y(n);
+        for (double& v : x) v = signedArgs(rng)*0.3;
+        expBatch::expClamped(x.data(), y.data(), n, 150);
+        for (int i = 0; i < n; ++i)
+        {
+            const double want = std::exp(std::min(std::max(x[i], -150.0), 150.0));
+            worstClampedBatch = std::max(worstClampedBatch, std::fabs(y[i]/want - 1));
+        }
+    }
+    near("expClamped batches of 0 to 19 values (bound 150) against std::exp", worstClampedBatch, 0, 1e-15);
 
     return testHarness::summary("exponential");
 }

@@ -92,7 +92,8 @@ Foam::voidFractionModels::kernel::kernel
     bandwidth_(0),
     bandwidthOverCellSize_(0),
     cutoff_(positiveCoeff("cutoff", 3)),
-    uniform_(false)
+    uniform_(false),
+    factorised_(false)
 {
     if (coeffs_.found("bandwidth") && coeffs_.found("bandwidthOverCellSize"))
     {
@@ -115,6 +116,12 @@ Foam::voidFractionModels::kernel::kernel
     collectWalls(mesh, coeffs_.lookupOrDefault<bool>("reflectAtWalls", true));
     uniform_ = locator_.isTensorGrid()
      && locator_.invSpacing(0) > 0 && locator_.invSpacing(1) > 0 && locator_.invSpacing(2) > 0;
+    // 4 cutoff^2 within prepareBlock's clamp
+    factorised_ = uniform_ && cutoff_ <= 6;
+    if (uniform_)
+    {
+        for (direction d = 0; d < 3; ++d) spacing_[d] = 1/locator_.invSpacing(d);
+    }
     if (locator_.isTensorGrid())
     {
         for (direction d = 0; d < 3; ++d)
@@ -391,68 +398,126 @@ void Foam::voidFractionModels::kernel::finishRow
 }
 
 
-bool Foam::voidFractionModels::kernel::fixedWindowWeights
+void Foam::voidFractionModels::kernel::prepareBlock
 (
-    const label p,
-    const point& c,
-    const scalar b,
-    const scalar rc
+    const UList<point>& x,
+    const label p0,
+    const label p1,
+    const bool relative
 )
 {
-    // four cells per direction whatever the window holds: fixed loops over
-    // local arrays, the particle's twelve Gaussians in one batch, its
-    // mirrors' (at most three walls) after them; the cells beyond a
-    // shorter window repeat its last one and are never read
-    label first[3], n[3];
-    scalar e[24], dist[12];
-    const scalar invB2 = 1/sqr(b);
-    const scalar* xc[3];
-    for (direction d = 0; d < 3; ++d)
+    // the windows of a block of particles and the arguments of all their
+    // exponentials, which then run in one batch: a particle's few values
+    // alone would leave the batch waiting on its latency; room for every
+    // particle's twelve Gaussians and three mirrors' twelve
+    block_.setSize(p1 - p0);
+    blockArgs_.setSize(24*(p1 - p0));
+    scalar* const args = blockArgs_.data();
+    label nArgs = 0;
+    for (label p = p0; p < p1; ++p)
     {
-        const scalarList& g = locator_.gridPlanes(d);
-        n[d] = uniformWindow(g, locator_.invSpacing(d), c[d], rc, first[d]);
-        if (n[d] > 4) return false;
-        // an empty window beyond the grid: read its last cell and the
-        // three padded ones after it, never past them
-        first[d] = min(first[d], g.size() - 2);
-        xc[d] = gridCentres_[d].cdata() + first[d];
-        for (label k = 0; k < 4; ++k)
+        windowEntry& W = block_[p - p0];
+        W.fixed = false;
+        if (b_[p] <= 0) continue;
+        const point& c = x[p];
+        const scalar rc = cutoff_*b_[p];
+        const scalar invB2 = 1/sqr(b_[p]);
+        findMirrors(c, centreCells_[p], rc);
+        const scalar* xc[3];
+        bool fits = true;
+        for (direction d = 0; d < 3; ++d)
         {
-            dist[4*d + k] = sqr(xc[d][k] - c[d]);
-            e[4*d + k] = -dist[4*d + k]*invB2;
+            const scalarList& g = locator_.gridPlanes(d);
+            W.n[d] = uniformWindow(g, locator_.invSpacing(d), c[d], rc, W.first[d]);
+            fits = fits && W.n[d] <= 4;
+            // an empty window beyond the grid: read its last cell and the
+            // three padded ones after it, never past them
+            W.first[d] = min(W.first[d], g.size() - 2);
+            xc[d] = gridCentres_[d].cdata() + W.first[d];
+            for (label k = 0; k < 4; ++k) W.dist[4*d + k] = sqr(xc[d][k] - c[d]);
+            W.nMirrors[d] = nMirrors_[d];
         }
-    }
-    label nExp = 12;
-    for (direction d = 0; d < 3; ++d)
-    {
-        for (label j = 0; j < nMirrors_[d]; ++j)
+        if (!fits) continue;
+        W.fixed = true;
+        W.factorised =
+            factorised_ && relative && !(nMirrors_[0] || nMirrors_[1] || nMirrors_[2]);
+        W.rc = rc;
+        W.arg = nArgs;
+        if (W.factorised)
         {
-            for (label k = 0; k < 4; ++k)
+            // exp(-(d0 + k h)^2/b^2) = exp(-d0^2/b^2) R^k C^(k^2), d0 the
+            // first centre's offset, R = exp(-2 d0 h/b^2), C = exp(-h^2/b^2):
+            // the first factor is every cell's and cancels in the
+            // normalisation of a whole particle (where ranks or images
+            // share one, their windows' first cells differ)
+            for (direction d = 0; d < 3; ++d)
             {
-                e[nExp++] = -sqr(xc[d][k] - mirrors_[d][j])*invB2;
+                args[nArgs++] = -2*(xc[d][0] - c[d])*spacing_[d]*invB2;
+                args[nArgs++] = -sqr(spacing_[d])*invB2;
+            }
+            continue;
+        }
+        for (direction d = 0; d < 3; ++d)
+        {
+            for (label k = 0; k < 4; ++k) args[nArgs++] = -W.dist[4*d + k]*invB2;
+            for (label j = 0; j < nMirrors_[d]; ++j)
+            {
+                for (label k = 0; k < 4; ++k)
+                {
+                    args[nArgs++] = -sqr(xc[d][k] - mirrors_[d][j])*invB2;
+                }
             }
         }
     }
-    // a constant count for most particles: the batch's loop then unrolls
-    if (nExp == 12) expBatch::expNonPositive(e, e, 12);
-    else expBatch::expNonPositive(e, e, nExp);
-    label im = 12;
+    // the clamp keeps the factorised products of the cells beyond a window
+    // finite; those in it need at most exp(4 cutoff^2), as a window of two
+    // or more cells is at most 2 cutoff b wide; a direct Gaussian clamped
+    // at exp(-150) adds nothing next to its particle's own, at least
+    // exp(-cutoff^2) in a cell it keeps
+    expBatch::expClamped(args, args, nArgs, factorised_ ? 150 : 700);
+}
+
+
+bool Foam::voidFractionModels::kernel::blockRows(const label p, const label p0)
+{
+    const windowEntry& W = block_[p - p0];
+    if (!W.fixed) return false;
+
+    // four cells per direction whatever the window holds: fixed loops over
+    // local arrays; the cells beyond a shorter window are never read
+    scalar e[12];
+    const scalar* a = blockArgs_.cdata() + W.arg;
     for (direction d = 0; d < 3; ++d)
     {
-        for (label j = 0; j < nMirrors_[d]; ++j)
+        scalar* f = e + 4*d;
+        if (W.factorised)
         {
-            for (label k = 0; k < 4; ++k) e[4*d + k] += e[im++];
+            const scalar RC = a[2*d]*a[2*d + 1];
+            const scalar C2 = sqr(a[2*d + 1]);
+            f[0] = 1;
+            f[1] = RC;
+            f[2] = RC*RC*C2;
+            f[3] = f[2]*RC*sqr(C2);
+        }
+        else
+        {
+            for (label k = 0; k < 4; ++k) f[k] = a[k];
+            a += 4;
+            for (label j = 0; j < W.nMirrors[d]; ++j, a += 4)
+            {
+                for (label k = 0; k < 4; ++k) f[k] += a[k];
+            }
         }
         // each cell's own width: the planes are uniform to round-off only
-        const scalar* h = gridWidths_[d].cdata() + first[d];
-        for (label k = 0; k < 4; ++k) e[4*d + k] *= h[k];
+        const scalar* h = gridWidths_[d].cdata() + W.first[d];
+        for (label k = 0; k < 4; ++k) f[k] *= h[k];
     }
 
-    const label k0 = weights_.extend(n[0]*n[1]*n[2]);
+    const label k0 = weights_.extend(W.n[0]*W.n[1]*W.n[2]);
     scalar sum = 0;
     const label m = ballRows
     (
-        locator_, first, n, e, e + 4, e + 8, dist, dist + 4, dist + 8, sqr(rc),
+        locator_, W.first, W.n, e, e + 4, e + 8, W.dist, W.dist + 4, W.dist + 8, sqr(W.rc),
         weights_.cellsData() + k0, weights_.fractionsData() + k0, sum
     );
     finishRow(p, k0, m, sum);
@@ -561,16 +626,18 @@ void Foam::voidFractionModels::kernel::distribute
     // rows are made
     const bool whole = entriesAreWhole(n);
     const bool spread = spreadsRows(n);
+    const label blockSize = 64;
     forAll(x, p)
     {
+        const label p0 = p - p % blockSize;
+        if (uniform_ && p == p0) prepareBlock(x, p0, min(p0 + blockSize, n), whole);
         sums_[p] = 0;
-        if (b_[p] > 0)
+        if (b_[p] > 0 && !(uniform_ && blockRows(p, p0)))
         {
             const scalar rc = cutoff_*b_[p];
             if (locator_.isTensorGrid()) findMirrors(x[p], centreCells_[p], rc);
             else findImages(x[p], centreCells_[p], rc);
-            if (uniform_ && fixedWindowWeights(p, x[p], b_[p], rc)) {}
-            else if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
+            if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
             else walkWeights(p, x[p], b_[p], rc);
         }
         weights_.endParticle();

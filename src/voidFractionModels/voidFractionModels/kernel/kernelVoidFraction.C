@@ -59,8 +59,9 @@ inline Foam::label ballRows
         for (Foam::label ky = 0; ky < n[1]; ++ky)
         {
             // every cell of the row is written and only those in the ball
-            // are kept: no branch on the data, whose outcome the branch
-            // predictor cannot know
+            // are kept, and their weights added as a product (a choice
+            // compiled to a branch): no branch on the data, whose outcome
+            // the branch predictor cannot know
             const Foam::scalar left = rc2 - (dy[ky] + dz[kz]);
             const Foam::scalar fyz = fy[ky]*fz[kz];
             const Foam::label* row = locator.gridRow(first[0], first[1] + ky, first[2] + kz);
@@ -70,7 +71,7 @@ inline Foam::label ballRows
                 const bool inside = dx[kx] <= left;
                 cells[m] = row[kx];
                 fractions[m] = f;
-                sum += inside ? f : 0;
+                sum += f*Foam::scalar(inside);
                 m += inside;
             }
         }

@@ -39,7 +39,9 @@ inline Foam::label uniformWindow
 // direction) inside the ball of radius sqrt(rc2), from the factors and
 // squared distances per direction, written from cells and fractions on;
 // their number returned, their weights added to sum. Inlined into both
-// callers: the compiler then sees the arrays are not the rows.
+// callers: the compiler then sees the arrays are not the rows. NX, NY, NZ:
+// the window sizes when fixed at compile time (0: n).
+template<int NX = 0, int NY = 0, int NZ = 0>
 inline Foam::label ballRows
 (
     const Foam::particleCellLocator& locator,
@@ -54,9 +56,9 @@ inline Foam::label ballRows
 )
 {
     Foam::label m = 0;
-    for (Foam::label kz = 0; kz < n[2]; ++kz)
+    for (Foam::label kz = 0; kz < (NZ ? NZ : n[2]); ++kz)
     {
-        for (Foam::label ky = 0; ky < n[1]; ++ky)
+        for (Foam::label ky = 0; ky < (NY ? NY : n[1]); ++ky)
         {
             // every cell of the row is written and only those in the ball
             // are kept, and their weights added as a product (a choice
@@ -65,7 +67,7 @@ inline Foam::label ballRows
             const Foam::scalar left = rc2 - (dy[ky] + dz[kz]);
             const Foam::scalar fyz = fy[ky]*fz[kz];
             const Foam::label* row = locator.gridRow(first[0], first[1] + ky, first[2] + kz);
-            for (Foam::label kx = 0; kx < n[0]; ++kx)
+            for (Foam::label kx = 0; kx < (NX ? NX : n[0]); ++kx)
             {
                 const Foam::scalar f = fx[kx]*fyz;
                 const bool inside = dx[kx] <= left;
@@ -516,11 +518,36 @@ bool Foam::voidFractionModels::kernel::blockRows(const label p, const label p0)
 
     const label k0 = weights_.extend(W.n[0]*W.n[1]*W.n[2]);
     scalar sum = 0;
-    const label m = ballRows
-    (
-        locator_, W.first, W.n, e, e + 4, e + 8, W.dist, W.dist + 4, W.dist + 8, sqr(W.rc),
-        weights_.cellsData() + k0, weights_.fractionsData() + k0, sum
-    );
+    label* cells = weights_.cellsData() + k0;
+    scalar* fractions = weights_.fractionsData() + k0;
+    const scalar* dist = W.dist;
+    const scalar rc2 = sqr(W.rc);
+
+    // windows of two or three cells per direction (those of the default
+    // bandwidth) in loops of fixed length: one choice among eight instead
+    // of a loop end per row, which the branch predictor cannot know
+    #define ROWS(NX, NY, NZ)                                                 \
+        ballRows<NX, NY, NZ>                                                 \
+        (                                                                    \
+            locator_, W.first, W.n, e, e + 4, e + 8,                         \
+            dist, dist + 4, dist + 8, rc2, cells, fractions, sum             \
+        )
+    const unsigned twos = (W.n[0] == 2) | (W.n[1] == 2) << 1 | (W.n[2] == 2) << 2;
+    const unsigned threes = (W.n[0] == 3) | (W.n[1] == 3) << 1 | (W.n[2] == 3) << 2;
+    label m = 0;
+    if ((twos | threes) != 7) m = ROWS(0, 0, 0);
+    else switch (twos)
+    {
+        case 0: m = ROWS(3, 3, 3); break;
+        case 1: m = ROWS(2, 3, 3); break;
+        case 2: m = ROWS(3, 2, 3); break;
+        case 3: m = ROWS(2, 2, 3); break;
+        case 4: m = ROWS(3, 3, 2); break;
+        case 5: m = ROWS(2, 3, 2); break;
+        case 6: m = ROWS(3, 2, 2); break;
+        default: m = ROWS(2, 2, 2); break;
+    }
+    #undef ROWS
     finishRow(p, k0, m, sum);
     return true;
 }
@@ -542,7 +569,7 @@ void Foam::voidFractionModels::kernel::gridWeights
     // room for the whole box of cells; the ball keeps about half of it
     const label k0 = weights_.extend(n[0]*n[1]*n[2]);
     scalar sum = 0;
-    const label m = ballRows
+    const label m = ballRows<>
     (
         locator_, first, n,
         factor_[0].cdata(), factor_[1].cdata(), factor_[2].cdata(),

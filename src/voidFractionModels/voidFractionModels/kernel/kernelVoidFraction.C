@@ -495,21 +495,21 @@ bool Foam::voidFractionModels::kernel::blockRows(const label p, const label p0)
         scalar* f = e + 4*d;
         if (W.factorised)
         {
+            // the cells' volume, the same in every cell of uniform planes,
+            // cancels in the normalisation like the first cell's Gaussian
             const scalar RC = a[2*d]*a[2*d + 1];
             const scalar C2 = sqr(a[2*d + 1]);
             f[0] = 1;
             f[1] = RC;
             f[2] = RC*RC*C2;
             f[3] = f[2]*RC*sqr(C2);
+            continue;
         }
-        else
+        for (label k = 0; k < 4; ++k) f[k] = a[k];
+        a += 4;
+        for (label j = 0; j < W.nMirrors[d]; ++j, a += 4)
         {
-            for (label k = 0; k < 4; ++k) f[k] = a[k];
-            a += 4;
-            for (label j = 0; j < W.nMirrors[d]; ++j, a += 4)
-            {
-                for (label k = 0; k < 4; ++k) f[k] += a[k];
-            }
+            for (label k = 0; k < 4; ++k) f[k] += a[k];
         }
         // each cell's own width: the planes are uniform to round-off only
         const scalar* h = gridWidths_[d].cdata() + W.first[d];

@@ -655,21 +655,24 @@ void Foam::voidFractionModels::kernel::distribute
     const bool whole = entriesAreWhole(n);
     const bool spread = spreadsRows(n);
     const label blockSize = 64;
-    forAll(x, p)
+    for (label p0 = 0; p0 < n; p0 += blockSize)
     {
-        const label p0 = p - p % blockSize;
-        if (uniform_ && p == p0) prepareBlock(x, p0, min(p0 + blockSize, n), whole);
-        sums_[p] = 0;
-        if (b_[p] > 0 && !(uniform_ && blockRows(p, p0)))
+        const label p1 = min(p0 + blockSize, n);
+        if (uniform_) prepareBlock(x, p0, p1, whole);
+        for (label p = p0; p < p1; ++p)
         {
-            const scalar rc = cutoff_*b_[p];
-            if (locator_.isTensorGrid()) findMirrors(x[p], centreCells_[p], rc);
-            else findImages(x[p], centreCells_[p], rc);
-            if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
-            else walkWeights(p, x[p], b_[p], rc);
+            sums_[p] = 0;
+            if (b_[p] > 0 && !(uniform_ && blockRows(p, p0)))
+            {
+                const scalar rc = cutoff_*b_[p];
+                if (locator_.isTensorGrid()) findMirrors(x[p], centreCells_[p], rc);
+                else findImages(x[p], centreCells_[p], rc);
+                if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
+                else walkWeights(p, x[p], b_[p], rc);
+            }
+            weights_.endParticle();
+            if (whole) normalise(p, spread);
         }
-        weights_.endParticle();
-        if (whole) normalise(p, spread);
     }
     if (!whole)
     {

@@ -286,7 +286,7 @@ void Foam::voidFractionModels::kernel::findImages
 }
 
 
-void Foam::voidFractionModels::kernel::findMirrors
+inline void Foam::voidFractionModels::kernel::findMirrors
 (
     const point& c,
     const label celli,
@@ -385,7 +385,7 @@ void Foam::voidFractionModels::kernel::axisFactors(const scalar x[3], const scal
 }
 
 
-void Foam::voidFractionModels::kernel::finishRow
+inline void Foam::voidFractionModels::kernel::finishRow
 (
     const label p,
     const label k0,

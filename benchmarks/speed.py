@@ -92,5 +92,5 @@ for (mesh, label), reps in runs.items():
     base = runs[(mesh, "centroid")]
     t = statistics.median(r["median"] for r in reps)
     ratio = statistics.median(r["median"] / b["median"] for r, b in zip(reps, base))
-    print("| %s | %s | %.5f | %.3e | %.1f | %.0e |" % (mesh, label, t, N_PARTICLES / t, ratio,
+    print("| %s | %s | %.5f | %.3e | %.2f | %.0e |" % (mesh, label, t, N_PARTICLES / t, ratio,
                                                      max(r["conservation"] for r in reps)))

@@ -88,15 +88,26 @@ def test_grid_against_walk():
     logs = [run_model(case, os.path.join(full, "p.dump"), "voxel")[1] for case in (full, part)]
     check("the full box is a tensor grid, the box without a corner is not",
           "tensor-product" in logs[0] and "tensor-product" not in logs[1])
+    # the kernel also at the factorised Gaussians' bound: cutoff 6, a cell 12
+    # bandwidths wide, particles on the cell faces x = 3 mm k (and on the
+    # cells' centres in y and z): windows of two cells in x, the second's
+    # factor exp(144) times the first's Gaussian term, which prepareBlock's
+    # clamp must leave exact; the two cells get half the volume each
+    h = 0.003
+    faces = [(h * (1 + i % 7) + 1e-10, h * (0.5 + (i // 7) % 8), h * (0.5 + (i // 56) % 8))
+             for i in range(100)]
     fields = {}
     for name, case in (("grid", full), ("walk", part)):
         write_dump(os.path.join(case, "p.dump"), c, r)
+        write_dump(os.path.join(case, "faces.dump"), faces, r[:100])
         V = cell_volumes(case)
         C = cell_centres(case)
-        for model in ("analytical", "voxel", "hybrid", "kernel"):
-            s = model_solid(case, "p.dump", model, V)
+        for model, dump, coeffs in (("analytical", "p.dump", ""), ("voxel", "p.dump", ""),
+                                    ("hybrid", "p.dump", ""), ("kernel", "p.dump", ""),
+                                    ("kernel cutoff 6", "faces.dump", "cutoff 6; bandwidthOverCellSize 0.0834;")):
+            s = model_solid(case, dump, model.split()[0], V, coeffs)
             fields[(name, model)] = {tuple(round(x / 1e-6) for x in cc): v for cc, v in zip(C, s)}
-    for model in ("analytical", "voxel", "hybrid", "kernel"):
+    for model in ("analytical", "voxel", "hybrid", "kernel", "kernel cutoff 6"):
         g, w = fields[("grid", model)], fields[("walk", model)]
         diff = max(abs(g[k] - w[k]) for k in w) / max(g.values())
         near("%s: tensor-grid path = walk on the same cells (max rel to the largest)" % model, diff, 0, 1e-12)

@@ -39,12 +39,14 @@ unsigned Foam::sphereWalkVoidFraction::gridWrapsSphere
     const label centreCell
 ) const
 {
+    if (!gridWraps_ || centreCell < 0) return 0;
+    // a sphere narrower than every cell crosses at most one plane per
+    // direction, and its pieces fit: the split cannot fail
+    if (2*R <= locator_.minWidth()) return gridWraps_;
     bool cut[3];
     scalar offset[3];
     label low[3], high[3];
-    return
-        (gridWraps_ && centreCell >= 0 && gridPieces(centreCell, c, R, true, cut, offset, low, high))
-      ? gridWraps_ : 0;
+    return gridPieces(centreCell, c, R, true, cut, offset, low, high) ? gridWraps_ : 0;
 }
 
 

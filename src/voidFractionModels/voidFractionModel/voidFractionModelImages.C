@@ -70,12 +70,19 @@ void Foam::voidFractionModel::collectPeriodicShifts()
         if (mag(S) > tol) shifts.append(S);
     }
     periodicShifts_.transfer(shifts);
-    for (const vector& t : directions)
+    shiftDirections_.setSize(periodicShifts_.size());
+    forAll(periodicShifts_, s)
     {
+        shiftDirections_[s] = 0;
         for (direction d = 0; d < 3; ++d)
         {
-            if (mag(t[d]) > tol) periodicDirection_[d] = true;
+            if (mag(periodicShifts_[s][d]) > tol) shiftDirections_[s] |= 1u << d;
         }
+        periodicDirections_ |= shiftDirections_[s];
+    }
+    for (direction d = 0; d < 3; ++d)
+    {
+        periodicDirection_[d] = (periodicDirections_ >> d) & 1;
     }
     if (periodicShifts_.size())
     {
@@ -147,18 +154,17 @@ bool Foam::voidFractionModel::makeImages
             add(x[nCopied], nCopied, Zero);
         }
     };
-    const scalar tol = 1e-9*globalBounds_.mag();
     forAll(x, p)
     {
         const scalar reach = imageReach(r[p]);
         if (!nearPeriodicSide(x[p], reach)) continue;
+        // a shift along wrapped directions only is the model's own wrap
         const unsigned wrapped = wrappedDirections(x[p], r[p], centres[p]);
-        for (const vector& S : periodicShifts_)
+        if ((periodicDirections_ & ~wrapped) == 0) continue;
+        forAll(periodicShifts_, s)
         {
-            // a shift along wrapped directions only: the model's own wrap
-            unsigned along = 0;
-            for (direction d = 0; d < 3; ++d) along |= unsigned(mag(S[d]) > tol) << d;
-            if ((along & ~wrapped) == 0) continue;
+            if ((shiftDirections_[s] & ~wrapped) == 0) continue;
+            const vector& S = periodicShifts_[s];
             if (overlaps(x[p] + S, reach))
             {
                 copyUpTo(p + 1);

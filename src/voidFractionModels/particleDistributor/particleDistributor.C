@@ -6,7 +6,8 @@
 Foam::particleDistributor::particleDistributor(const voidFractionModel& model)
 :
     model_(model),
-    boxes_(Pstream::nProcs())
+    boxes_(Pstream::nProcs()),
+    alone_(true)
 {
     const polyMesh& mesh = model.mesh();
     boxes_[Pstream::myProcNo()] = boundBox(mesh.points(), false);
@@ -19,21 +20,18 @@ Foam::particleDistributor::particleDistributor(const voidFractionModel& model)
             directions_.append(d);
         }
     }
-}
-
-
-bool Foam::particleDistributor::meets
-(
-    const boundBox& box,
-    const point& c,
-    const scalar R
-) const
-{
-    for (const label d : directions_)
+    const boundBox& mine = boxes_[Pstream::myProcNo()];
+    forAll(boxes_, rank)
     {
-        if (c[d] + R < box.min()[d] || c[d] - R > box.max()[d]) return false;
+        if (rank == Pstream::myProcNo()) continue;
+        bool overlaps = true;
+        for (const label d : directions_)
+        {
+            overlaps = overlaps
+             && boxes_[rank].min()[d] < mine.max()[d] && boxes_[rank].max()[d] > mine.min()[d];
+        }
+        if (overlaps) alone_ = false;
     }
-    return true;
 }
 
 
@@ -62,6 +60,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
     }
 
     const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
     const List<vector>& shifts = model_.periodicShifts();
     const pointField& x = owned.positions();
     const scalarField& r = owned.radii();
@@ -72,6 +71,12 @@ Foam::particleHolders Foam::particleDistributor::distribute
         const scalar R = model_.reach(r[p]);
         // only a particle near a periodic side has images that matter
         const bool nearSide = model_.nearPeriodicSide(x[p], R);
+        // most of the owned particles lie well inside this rank's cells
+        if (alone_ && !nearSide && inside(boxes_[me], x[p], R))
+        {
+            sends[me].append(p);
+            continue;
+        }
         bool sent = false;
         for (label rank = 0; rank < nProcs; ++rank)
         {
@@ -101,7 +106,6 @@ Foam::particleHolders Foam::particleDistributor::distribute
     List<pointField> receivedX(nProcs);
     List<scalarField> receivedR(nProcs);
     List<vectorField> receivedU(nProcs);
-    const label me = Pstream::myProcNo();
     forAll(sends, rank)
     {
         const labelList& send = subMap[rank];

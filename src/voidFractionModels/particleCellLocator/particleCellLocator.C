@@ -188,6 +188,41 @@ Foam::label Foam::particleCellLocator::findCell
 }
 
 
+void Foam::particleCellLocator::findCells
+(
+    const UList<point>& x,
+    labelList& cells
+) const
+{
+    if (!isTensorGrid())
+    {
+        forAll(x, i) cells[i] = findCell(x[i], cells[i]);
+        return;
+    }
+    const scalar* g[3] = {grid_[0].cdata(), grid_[1].cdata(), grid_[2].cdata()};
+    forAll(x, i)
+    {
+        const label hint = cells[i];
+        if (hint >= 0)
+        {
+            // the half-open intervals interval() finds
+            const label* ijk = cellIjk_.cdata() + 3*hint;
+            bool in = true;
+            for (direction d = 0; d < 3; ++d)
+            {
+                const scalar c = x[i][d];
+                in = in && c >= g[d][ijk[d]] && c < g[d][ijk[d] + 1];
+            }
+            if (in) continue;
+        }
+        const label a = interval(0, x[i].x());
+        const label b = interval(1, x[i].y());
+        const label c = interval(2, x[i].z());
+        cells[i] = (a < 0 || b < 0 || c < 0) ? -1 : gridCell(a, b, c);
+    }
+}
+
+
 Foam::label Foam::particleCellLocator::planesCrossed
 (
     const label centreCell,

@@ -217,10 +217,7 @@ void Foam::voidFractionModel::update
 
     const scalarField& r = particles.radii();
     carryHints(particles.ids());
-    forAll(x0, i)
-    {
-        hints_[i] = locator_.findCell(x0[i], hints_[i]);
-    }
+    locator_.findCells(x0, hints_);
     selectMoved(x0, r);
     particleVolumes_.setSize(n);
     forAll(particleVolumes_, p)

@@ -154,8 +154,10 @@ bool Foam::voidFractionModel::makeImages
             add(x[nCopied], nCopied, Zero);
         }
     };
+    const scalar wrappedR = wrappedRadius();
     forAll(x, p)
     {
+        if (centres[p] >= 0 && r[p] <= wrappedR) continue;
         const scalar reach = imageReach(r[p]);
         if (!nearPeriodicSide(x[p], reach)) continue;
         // a shift along wrapped directions only is the model's own wrap

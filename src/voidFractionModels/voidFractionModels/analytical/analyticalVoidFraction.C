@@ -34,6 +34,12 @@ unsigned Foam::voidFractionModels::analytical::wrappedDirections
 }
 
 
+Foam::scalar Foam::voidFractionModels::analytical::wrappedRadius() const
+{
+    return (periodicDirections_ & ~gridWraps_) == 0 ? 0.5*locator_.minWidth() : -1;
+}
+
+
 void Foam::voidFractionModels::analytical::distribute
 (
     const UList<point>& x,

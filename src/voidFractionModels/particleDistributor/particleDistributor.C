@@ -7,6 +7,7 @@ Foam::particleDistributor::particleDistributor(const voidFractionModel& model)
 :
     model_(model),
     boxes_(Pstream::nProcs()),
+    splitDirections_(0),
     alone_(true)
 {
     const polyMesh& mesh = model.mesh();
@@ -18,6 +19,27 @@ Foam::particleDistributor::particleDistributor(const voidFractionModel& model)
         if (!model.twoDimensional() || mesh.solutionD()[d] != -1)
         {
             directions_.append(d);
+        }
+    }
+    boundBox all(boxes_[0]);
+    for (const boundBox& box : boxes_) all.add(box);
+    const scalar tol = 1e-9*all.mag();
+    for (const label d : directions_)
+    {
+        for (const boundBox& box : boxes_)
+        {
+            if (box.min()[d] > all.min()[d] + tol || box.max()[d] < all.max()[d] - tol)
+            {
+                splitDirections_ |= 1u << d;
+            }
+        }
+    }
+    const List<vector>& shifts = model.periodicShifts();
+    forAll(shifts, s)
+    {
+        if ((model.shiftDirections()[s] & ~splitDirections_) == 0)
+        {
+            splitShifts_.append(shifts[s]);
         }
     }
     const boundBox& mine = boxes_[Pstream::myProcNo()];
@@ -61,7 +83,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
 
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
-    const List<vector>& shifts = model_.periodicShifts();
+    const List<vector>& shifts = splitShifts_;
     const pointField& x = owned.positions();
     const scalarField& r = owned.radii();
 
@@ -70,7 +92,8 @@ Foam::particleHolders Foam::particleDistributor::distribute
     {
         const scalar R = model_.reach(r[p]);
         // only a particle near a periodic side has images that matter
-        const bool nearSide = model_.nearPeriodicSide(x[p], R);
+        const bool nearSide =
+            splitDirections_ && model_.nearPeriodicSide(x[p], R, splitDirections_);
         // most of the owned particles lie well inside this rank's cells
         if (alone_ && !nearSide && inside(boxes_[me], x[p], R))
         {

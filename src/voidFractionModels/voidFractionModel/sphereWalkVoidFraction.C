@@ -17,7 +17,7 @@ Foam::sphereWalkVoidFraction::sphereWalkVoidFraction
     const scalar tol = 1e-9*globalBounds_.mag();
     for (direction d = 0; d < 3; ++d)
     {
-        if (!periodicDirection_[d]) continue;
+        if (!((periodicDirections_ >> d) & 1)) continue;
         const scalarList& g = locator_.gridPlanes(d);
         const scalar span = globalBounds_.span()[d];
         bool wraps =

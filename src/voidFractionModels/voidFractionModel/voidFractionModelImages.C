@@ -80,10 +80,6 @@ void Foam::voidFractionModel::collectPeriodicShifts()
         }
         periodicDirections_ |= shiftDirections_[s];
     }
-    for (direction d = 0; d < 3; ++d)
-    {
-        periodicDirection_[d] = (periodicDirections_ >> d) & 1;
-    }
     if (periodicShifts_.size())
     {
         Info<< "voidFractionModel: periodic translations " << directions
@@ -95,16 +91,18 @@ void Foam::voidFractionModel::collectPeriodicShifts()
 bool Foam::voidFractionModel::nearPeriodicSide
 (
     const point& c,
-    const scalar reach
+    const scalar reach,
+    const unsigned mask
 ) const
 {
     // a particle clear of every periodic side of the box has no image that
     // reaches it (the translations span the box)
     const point& lo = globalBounds_.min();
     const point& hi = globalBounds_.max();
+    const unsigned tested = periodicDirections_ & mask;
     for (direction d = 0; d < 3; ++d)
     {
-        if (periodicDirection_[d] && (c[d] - reach <= lo[d] || c[d] + reach >= hi[d]))
+        if (((tested >> d) & 1) && (c[d] - reach <= lo[d] || c[d] + reach >= hi[d]))
         {
             return true;
         }
@@ -154,12 +152,16 @@ bool Foam::voidFractionModel::makeImages
             add(x[nCopied], nCopied, Zero);
         }
     };
+    // an image across a side the model wraps is never needed: a particle
+    // it always wraps is tested against the other periodic sides only
+    const unsigned unwrapped = ~wrappedAlways();
     const scalar wrappedR = wrappedRadius();
     forAll(x, p)
     {
-        if (centres[p] >= 0 && r[p] <= wrappedR) continue;
+        const unsigned tested = (centres[p] >= 0 && r[p] <= wrappedR) ? unwrapped : ~0u;
+        if ((periodicDirections_ & tested) == 0) continue;
         const scalar reach = imageReach(r[p]);
-        if (!nearPeriodicSide(x[p], reach)) continue;
+        if (!nearPeriodicSide(x[p], reach, tested)) continue;
         // a shift along wrapped directions only is the model's own wrap
         const unsigned wrapped = wrappedDirections(x[p], r[p], centres[p]);
         if ((periodicDirections_ & ~wrapped) == 0) continue;

@@ -34,9 +34,16 @@ unsigned Foam::voidFractionModels::analytical::wrappedDirections
 }
 
 
+unsigned Foam::voidFractionModels::analytical::wrappedAlways() const
+{
+    return gridWraps_;
+}
+
+
 Foam::scalar Foam::voidFractionModels::analytical::wrappedRadius() const
 {
-    return (periodicDirections_ & ~gridWraps_) == 0 ? 0.5*locator_.minWidth() : -1;
+    // a sphere narrower than every cell is always split on the grid
+    return gridWraps_ ? 0.5*locator_.minWidth() : -1;
 }
 
 

@@ -216,6 +216,23 @@ void Foam::liggghtsCoupling::setForces
     }
     double** f = static_cast<LAMMPS_NS::FixPropertyAtom*>(fix)->array_atom;
     LAMMPS_NS::Atom& atom = *lmp_->atom;
+    // the forces of the atoms as particles() listed them (no DEM step
+    // since): no id lookup
+    bool inLocalOrder = (ids.size() == atom.nlocal);
+    for (label i = 0; inLocalOrder && i < atom.nlocal; ++i)
+    {
+        inLocalOrder = (ids[i] == label(atom.tag[i]));
+    }
+    if (inLocalOrder)
+    {
+        for (label i = 0; i < atom.nlocal; ++i)
+        {
+            f[i][0] = forces[i].x();
+            f[i][1] = forces[i].y();
+            f[i][2] = forces[i].z();
+        }
+        return;
+    }
     for (label i = 0; i < atom.nlocal; ++i)
     {
         f[i][0] = f[i][1] = f[i][2] = 0;

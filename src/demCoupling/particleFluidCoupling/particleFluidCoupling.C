@@ -103,7 +103,9 @@ Foam::particleFluidCoupling::particleFluidCoupling
     timeVoidFraction_(0),
     timeForces_(0),
     timeFluid_(0),
-    worstMomentumError_(0)
+    worstMomentumError_(0),
+    totalForce_(Zero),
+    mostHeld_(0)
 {
     const word form(dict_.getOrDefault<word>("formulation", "A"));
     if (form == "B")
@@ -273,13 +275,6 @@ Type Foam::particleFluidCoupling::localSumOverParticles(const UList<Type>& value
 }
 
 
-template<class Type>
-Type Foam::particleFluidCoupling::sumOverParticles(const UList<Type>& values) const
-{
-    return returnReduce(localSumOverParticles(values), sumOp<Type>());
-}
-
-
 Foam::particleData Foam::particleFluidCoupling::particlesOnMaster() const
 {
     const particleHolders& holders = voidFraction_->holders();
@@ -414,18 +409,41 @@ void Foam::particleFluidCoupling::endStep
         if (buoyancy_) F[i] -= rho_*volumes[i]*g_;
     }
     // what the particles gained and what the fluid lost to them in this
-    // step's equations, in one reduction
-    vectorField balance(2);
-    balance[0] = localSumOverParticles(stepDrag_);
-    balance[1] = rho_*sum
+    // step's equations; at the end of the interval also the total force
+    // and the particles each rank holds, for the log: one reduction
+    const bool last = (fluidStep_ == fluidStepsPerCoupling_);
+    const label nProcs = Pstream::nProcs();
+    scalarField sums(6 + (last ? 3 + nProcs : 0), Zero);
+    auto put = [&](const label at, const vector& v)
+    {
+        for (direction d = 0; d < 3; ++d) sums[at + d] = v[d];
+    };
+    auto get = [&](const label at)
+    {
+        return vector(sums[at], sums[at + 1], sums[at + 2]);
+    };
+    put(0, localSumOverParticles(stepDrag_));
+    put(3, rho_*sum
     (
         mesh_.V().field()*(Ksl_.primitiveField()*U.primitiveField()
       - dragSource_.primitiveField())
-    );
-    reduce(balance, sumOp<vectorField>());
+    ));
+    if (last)
+    {
+        forceMean_ = F/scalar(fluidStepsPerCoupling_);
+        put(6, localSumOverParticles(forceMean_));
+        sums[9 + Pstream::myProcNo()] = particles_.size();
+    }
+    reduce(sums, sumOp<scalarField>());
+    const vector particlesGained(get(0)), fluidLost(get(3));
     const scalar error =
-        mag(balance[1] - balance[0])/max(mag(balance[0]), VSMALL);
+        mag(fluidLost - particlesGained)/max(mag(particlesGained), VSMALL);
     worstMomentumError_ = max(worstMomentumError_, error);
+    if (last)
+    {
+        totalForce_ = get(6);
+        mostHeld_ = label(max(SubList<scalar>(sums, nProcs, 9)));
+    }
     if (mesh_.time().writeTime())
     {
         Ksl_.correctBoundaryConditions();
@@ -433,7 +451,7 @@ void Foam::particleFluidCoupling::endStep
     }
     timeForces_ += clock_.timeIncrement();
 
-    if (fluidStep_ == fluidStepsPerCoupling_)
+    if (last)
     {
         pushForces();
     }
@@ -443,8 +461,7 @@ void Foam::particleFluidCoupling::endStep
 void Foam::particleFluidCoupling::pushForces()
 {
     clock_.timeIncrement();
-    vectorField F(forceSum_/scalar(fluidStepsPerCoupling_));
-    const vector total = sumOverParticles(F);
+    vectorField& F = forceMean_;
     const particleHolders& holders = voidFraction_->holders();
     if (holders.distributed())
     {
@@ -460,16 +477,14 @@ void Foam::particleFluidCoupling::pushForces()
 
     const voidFractionModel::statistics& s = voidFraction_->stats();
     Info<< "coupling " << nCouplings_ << ": " << s.nParticles
-        << " particles (at most "
-        << returnReduce(particles_.size(), maxOp<label>())
-        << " on a rank), seconds DEM " << timeDem_
+        << " particles (at most " << mostHeld_ << " on a rank), seconds DEM " << timeDem_
         << " exchange " << timeExchange_
         << " voidFraction " << timeVoidFraction_
         << " forces " << timeForces_
         << " fluid " << timeFluid_
         << "; alpha " << s.minVoidFraction << ".." << s.maxVoidFraction
         << ", momentum balance " << worstMomentumError_
-        << "; total fluid force on the particles " << total
+        << "; total fluid force on the particles " << totalForce_
         << "; weights kept " << s.nKept << endl;
 
     ++nCouplings_;

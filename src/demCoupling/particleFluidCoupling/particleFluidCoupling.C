@@ -324,39 +324,41 @@ void Foam::particleFluidCoupling::beginStep
         timeDem_ += clock_.timeIncrement();
         mapParticles();
 
-        // drag coefficients from the fluid state at each particle
+        // drag coefficients from the fluid state at each particle, spread
+        // to the cells as the implicit coefficient and its explicit part
         const label n = particles_.size();
         const scalarField& volumes = voidFraction_->particleVolumes();
-        scalarField alphaP;
-        vectorField Up;
-        voidFraction_->gather
-        (
-            voidFraction_->voidFraction().primitiveField(), alphaP,
-            U.primitiveField(), Up
-        );
         voidFraction_->weightSums(weightSum_);
         const vectorField& v = particles_.velocities();
         const scalar mu = rho_*nu;
         beta_.setSize(n);
-        forAll(beta_, i)
-        {
-            const scalar s = weightSum_[i];
-            if (s <= SMALL)
-            {
-                beta_[i] = 0;
-                continue;
-            }
-            const scalar a = alphaP[i]/s;
-            beta_[i] = drag_->beta
-            (
-                {2*particles_.radii()[i], volumes[i], a, mag(Up[i]/s - v[i]), rho_, mu}
-            );
-            if (formulation_ == formulation::B) beta_[i] /= a;
-        }
-
         scalarField cellBeta;
         vectorField cellBetaV;
-        voidFraction_->spread(beta_, cellBeta, vectorField(beta_*v), cellBetaV);
+        voidFraction_->gatherTurnSpread
+        (
+            voidFraction_->voidFraction().primitiveField(), U.primitiveField(),
+            cellBeta, cellBetaV,
+            [&](const label i, const scalar alphaP, const vector& Up, scalar& b, vector& bv)
+            {
+                const scalar s = weightSum_[i];
+                scalar& beta = beta_[i];
+                if (s <= SMALL)
+                {
+                    beta = 0;
+                }
+                else
+                {
+                    const scalar a = alphaP/s;
+                    beta = drag_->beta
+                    (
+                        {2*particles_.radii()[i], volumes[i], a, mag(Up/s - v[i]), rho_, mu}
+                    );
+                    if (formulation_ == formulation::B) beta /= a;
+                }
+                b = beta;
+                bv = beta*v[i];
+            }
+        );
         const scalarField& V = mesh_.V();
         // the equations read the cell values only: the boundaries (and
         // their processor exchange) wait for a write time, see endStep

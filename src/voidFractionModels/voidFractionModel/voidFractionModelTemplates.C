@@ -180,3 +180,56 @@ void Foam::voidFractionModel::gather
     }
     combineSums(perParticleA, perParticleB);
 }
+
+
+template<class TypeA, class TypeB, class SpreadA, class SpreadB, class Turn>
+void Foam::voidFractionModel::gatherTurnSpread
+(
+    const Field<TypeA>& perCellA,
+    const Field<TypeB>& perCellB,
+    Field<SpreadA>& spreadA,
+    Field<SpreadB>& spreadB,
+    const Turn& turn
+)
+{
+    const label n = weights_.nParticles();
+    if (smooths() || Pstream::parRun())
+    {
+        Field<TypeA> a;
+        Field<TypeB> b;
+        gather(perCellA, a, perCellB, b);
+        Field<SpreadA> sa(n);
+        Field<SpreadB> sb(n);
+        forAll(a, p) turn(p, a[p], b[p], sa[p], sb[p]);
+        spread(sa, spreadA, sb, spreadB);
+        return;
+    }
+    // each particle's rows are read once: gathered, turned, spread back,
+    // with the arithmetic (and the order of the sums) of the three steps
+    spreadA.setSize(mesh_.nCells());
+    spreadA = Zero;
+    spreadB.setSize(mesh_.nCells());
+    spreadB = Zero;
+    for (label p = 0; p < n; ++p)
+    {
+        TypeA sumA(pTraits<TypeA>::zero);
+        TypeB sumB(pTraits<TypeB>::zero);
+        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+        {
+            const scalar w = weights_.fraction(k);
+            const label celli = weights_.cell(k);
+            sumA += w*perCellA[celli];
+            sumB += w*perCellB[celli];
+        }
+        SpreadA sa;
+        SpreadB sb;
+        turn(p, sumA, sumB, sa, sb);
+        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+        {
+            const scalar w = weights_.fraction(k);
+            const label celli = weights_.cell(k);
+            spreadA[celli] += w*sa;
+            spreadB[celli] += w*sb;
+        }
+    }
+}

@@ -385,30 +385,31 @@ void Foam::particleFluidCoupling::endStep
 {
     timeFluid_ += clock_.timeIncrement();
 
-    vectorField Up, gradP;
-    if (pressureGradientForce_)
-    {
-        voidFraction_->gather(U.primitiveField(), Up, fvc::grad(p)().primitiveField(), gradP);
-    }
-    else
-    {
-        voidFraction_->gather(U.primitiveField(), Up);
-    }
     const vectorField& v = particles_.velocities();
     const scalarField& volumes = voidFraction_->particleVolumes();
 
-    // one pass: drag with the same weights as the fluid's, the others
+    // drag with the same weights as the fluid's, and the others
     vectorField& F = forceSum_;
     stepDrag_.setSize(F.size());
-    forAll(F, i)
+    auto force = [&](const label i, const vector& Up, const vector& gradP)
     {
-        stepDrag_[i] = beta_[i]*(Up[i] - weightSum_[i]*v[i]);
+        stepDrag_[i] = beta_[i]*(Up - weightSum_[i]*v[i]);
         F[i] += stepDrag_[i];
         if (pressureGradientForce_ && weightSum_[i] > SMALL)
         {
-            F[i] -= rho_*volumes[i]*gradP[i]/weightSum_[i];
+            F[i] -= rho_*volumes[i]*gradP/weightSum_[i];
         }
         if (buoyancy_) F[i] -= rho_*volumes[i]*g_;
+    };
+    if (pressureGradientForce_)
+    {
+        voidFraction_->gatherTurn(U.primitiveField(), fvc::grad(p)().primitiveField(), force);
+    }
+    else
+    {
+        vectorField Up;
+        voidFraction_->gather(U.primitiveField(), Up);
+        forAll(Up, i) force(i, Up[i], Zero);
     }
     // what the particles gained and what the fluid lost to them in this
     // step's equations; at the end of the interval also the total force

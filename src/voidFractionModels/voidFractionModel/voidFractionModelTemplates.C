@@ -165,20 +165,41 @@ void Foam::voidFractionModel::gather
         perParticleB.setSize(weights_.nParticles());
         forAll(perParticleA, p)
         {
-            TypeA sumA(pTraits<TypeA>::zero);
-            TypeB sumB(pTraits<TypeB>::zero);
-            for (label k = weights_.begin(p); k < weights_.end(p); ++k)
-            {
-                const scalar w = weights_.fraction(k);
-                const label celli = weights_.cell(k);
-                sumA += w*perCellA[celli];
-                sumB += w*perCellB[celli];
-            }
+            TypeA sumA;
+            TypeB sumB;
+            rowSums(p, perCellA, perCellB, sumA, sumB);
             perParticleA[p] = sumA;
             perParticleB[p] = sumB;
         }
     }
     combineSums(perParticleA, perParticleB);
+}
+
+
+template<class TypeA, class TypeB, class Turn>
+void Foam::voidFractionModel::gatherTurn
+(
+    const Field<TypeA>& perCellA,
+    const Field<TypeB>& perCellB,
+    const Turn& turn
+)
+{
+    if (smooths() || Pstream::parRun())
+    {
+        Field<TypeA> a;
+        Field<TypeB> b;
+        gather(perCellA, a, perCellB, b);
+        forAll(a, p) turn(p, a[p], b[p]);
+        return;
+    }
+    const label n = weights_.nParticles();
+    for (label p = 0; p < n; ++p)
+    {
+        TypeA sumA;
+        TypeB sumB;
+        rowSums(p, perCellA, perCellB, sumA, sumB);
+        turn(p, sumA, sumB);
+    }
 }
 
 
@@ -210,26 +231,21 @@ void Foam::voidFractionModel::gatherTurnSpread
     spreadA = Zero;
     spreadB.setSize(mesh_.nCells());
     spreadB = Zero;
-    for (label p = 0; p < n; ++p)
-    {
-        TypeA sumA(pTraits<TypeA>::zero);
-        TypeB sumB(pTraits<TypeB>::zero);
-        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+    gatherTurn
+    (
+        perCellA, perCellB,
+        [&](const label p, const TypeA& a, const TypeB& b)
         {
-            const scalar w = weights_.fraction(k);
-            const label celli = weights_.cell(k);
-            sumA += w*perCellA[celli];
-            sumB += w*perCellB[celli];
+            SpreadA sa;
+            SpreadB sb;
+            turn(p, a, b, sa, sb);
+            for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+            {
+                const scalar w = weights_.fraction(k);
+                const label celli = weights_.cell(k);
+                spreadA[celli] += w*sa;
+                spreadB[celli] += w*sb;
+            }
         }
-        SpreadA sa;
-        SpreadB sb;
-        turn(p, sumA, sumB, sa, sb);
-        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
-        {
-            const scalar w = weights_.fraction(k);
-            const label celli = weights_.cell(k);
-            spreadA[celli] += w*sa;
-            spreadB[celli] += w*sb;
-        }
-    }
+    );
 }

@@ -2,8 +2,10 @@
 """The model tests on real OpenFOAM meshes. Every check compares a number with
 an independent reference (sums of sphere volumes, closed forms, the serial
 run for the parallel one) and a tolerance. Ends with 'N passed, N failed'."""
+import bisect
 import math
 import os
+import random
 import re
 import shutil
 import sys
@@ -318,9 +320,63 @@ def test_keep_weights():
     check("negative keepDistance: clear error", rc != 0 and "keepDistance must be" in out)
 
 
+def grid_planes(case):
+    """The sorted distinct point coordinates per direction of a box-block mesh."""
+    text = open(os.path.join(case, "constant", "polyMesh", "points")).read()
+    pts = [tuple(float(v) for v in t.split()) for t in re.findall(r"\(([-0-9.eE+ ]+)\)", text)]
+    planes = []
+    for d in range(3):
+        vals = sorted(set(round(p[d], 15) for p in pts))
+        planes.append(vals)
+    return planes
+
+
+def test_centre_search():
+    print("centre search: a particle's cell from its previous cell, against the grid planes")
+    n = (8, 6, 5)
+    case = new_case(os.path.join(WORK, "centreSearch"), box_block_mesh(LO, HI, n, grading=(4, 0.3, 2)))
+    set_coupling(case, "voidFractionModel centroid;\nalphaMin 0.05;\n")
+    planes = grid_planes(case)
+    check("graded grid has %d x %d x %d cells" % n, [len(p) - 1 for p in planes] == list(n))
+    rng = random.Random(21)
+    before, after = [], []
+    for k in range(1200):
+        c = [rng.uniform(1e-4, L - 1e-4) for _ in range(3)]
+        kind = k % 4
+        if kind == 0:      # a small move, mostly within its cell
+            m = [x + rng.uniform(-1e-5, 1e-5) for x in c]
+        elif kind == 1:    # far away
+            m = [rng.uniform(1e-4, L - 1e-4) for _ in range(3)]
+        else:              # just either side of a plane of its own or the next cell
+            d = rng.randrange(3)
+            inner = planes[d][1:-1]
+            plane = min(inner, key=lambda g: abs(g - c[d]))
+            m = list(c)
+            m[d] = plane + (1 if kind == 2 else -1) * 1e-9 * L
+        before.append(tuple(c))
+        after.append(tuple(min(max(x, 1e-6), L - 1e-6) for x in m))
+    r = [5e-5] * len(after)
+    write_dump(os.path.join(case, "before.dump"), before, r)
+    write_dump(os.path.join(case, "after.dump"), after, r)
+    V = cell_volumes(case)
+    solid = [0.0] * len(V)
+    for p in after:
+        i, j, k = (bisect.bisect_right(planes[d], p[d]) - 1 for d in range(3))
+        solid[i + n[0] * (j + n[1] * k)] += sphere_volume(r[0])
+    want = [1 - s / v for s, v in zip(solid, V)]
+    for label, cmd in (("from the previous cells", "-previous before.dump -dump after.dump"),
+                       ("searched afresh", "-dump after.dump")):
+        rc, out = sh("demVoidFraction %s -name searched" % cmd, case, check=False)
+        check("centroid %s runs" % label, rc == 0, out[-600:] if rc else "")
+        if rc == 0:
+            got = read_scalar_field(os.path.join(case, "0", "searched"))
+            near("centroid %s: alpha = the grid planes' cells, max |d alpha|" % label,
+                 max(abs(a - b) for a, b in zip(got, want)), 0, 1e-12)
+
+
 def main():
     checks.run([test_closed_forms, test_thin_neighbour, test_meshes, test_fast_against_general, test_cyclic,
-                test_alpha_min, test_parallel, test_keep_weights, test_liggghts_in_process,
+                test_alpha_min, test_parallel, test_keep_weights, test_centre_search, test_liggghts_in_process,
                 test_bad_input], sys.argv[1:])
     return checks.summary("models")
 

@@ -53,7 +53,8 @@ void Foam::voidFractionModels::analytical::distribute
     const UList<scalar>& r
 )
 {
-
+    // whole particles' volumes are spread while their row is in cache
+    const bool spread = spreadsRows(x.size());
     forAll(x, p)
     {
         const label seed = centreCells_[p];
@@ -72,5 +73,6 @@ void Foam::voidFractionModels::analytical::distribute
             appendVolumes(r[p]);
         }
         weights_.endParticle();
+        if (spread) spreadRow(p, 1);
     }
 }

@@ -260,21 +260,6 @@ void Foam::particleFluidCoupling::handleOutside()
 }
 
 
-template<class Type>
-Type Foam::particleFluidCoupling::localSumOverParticles(const UList<Type>& values) const
-{
-    const particleHolders& holders = voidFraction_->holders();
-    Type sum(pTraits<Type>::zero);
-    forAll(values, i)
-    {
-        if (holders.counted(i)) sum += values[i];
-    }
-    // a copy, not the named sum: returned by name, the sum would be the
-    // caller's memory and each addition a store the next one waits for
-    return Type(sum);
-}
-
-
 Foam::particleData Foam::particleFluidCoupling::particlesOnMaster() const
 {
     const particleHolders& holders = voidFraction_->holders();
@@ -388,18 +373,32 @@ void Foam::particleFluidCoupling::endStep
     const vectorField& v = particles_.velocities();
     const scalarField& volumes = voidFraction_->particleVolumes();
 
-    // drag with the same weights as the fluid's, and the others
+    // drag with the same weights as the fluid's, and the others; the sums
+    // over the particles (each once) in the same pass: this step's drag,
+    // and at the end of the interval the mean force
+    const bool last = (fluidStep_ == fluidStepsPerCoupling_);
+    const scalar perStep = 1/scalar(fluidStepsPerCoupling_);
+    const particleHolders& holders = voidFraction_->holders();
     vectorField& F = forceSum_;
-    stepDrag_.setSize(F.size());
+    if (last) forceMean_.setSize(F.size());
+    vector dragSum(Zero), meanSum(Zero);
     auto force = [&](const label i, const vector& Up, const vector& gradP)
     {
-        stepDrag_[i] = beta_[i]*(Up - weightSum_[i]*v[i]);
-        F[i] += stepDrag_[i];
+        const vector drag(beta_[i]*(Up - weightSum_[i]*v[i]));
+        vector f(F[i] + drag);
         if (pressureGradientForce_ && weightSum_[i] > SMALL)
         {
-            F[i] -= rho_*volumes[i]*gradP/weightSum_[i];
+            f -= rho_*volumes[i]*gradP/weightSum_[i];
         }
-        if (buoyancy_) F[i] -= rho_*volumes[i]*g_;
+        if (buoyancy_) f -= rho_*volumes[i]*g_;
+        F[i] = f;
+        const bool counted = holders.counted(i);
+        if (counted) dragSum += drag;
+        if (last)
+        {
+            forceMean_[i] = f*perStep;
+            if (counted) meanSum += forceMean_[i];
+        }
     };
     if (pressureGradientForce_)
     {
@@ -414,7 +413,6 @@ void Foam::particleFluidCoupling::endStep
     // what the particles gained and what the fluid lost to them in this
     // step's equations; at the end of the interval also the total force
     // and the particles each rank holds, for the log: one reduction
-    const bool last = (fluidStep_ == fluidStepsPerCoupling_);
     const label nProcs = Pstream::nProcs();
     scalarField sums(6 + (last ? 3 + nProcs : 0), Zero);
     auto put = [&](const label at, const vector& v)
@@ -425,7 +423,7 @@ void Foam::particleFluidCoupling::endStep
     {
         return vector(sums[at], sums[at + 1], sums[at + 2]);
     };
-    put(0, localSumOverParticles(stepDrag_));
+    put(0, dragSum);
     put(3, rho_*sum
     (
         mesh_.V().field()*(Ksl_.primitiveField()*U.primitiveField()
@@ -433,8 +431,7 @@ void Foam::particleFluidCoupling::endStep
     ));
     if (last)
     {
-        forceMean_ = F/scalar(fluidStepsPerCoupling_);
-        put(6, localSumOverParticles(forceMean_));
+        put(6, meanSum);
         sums[9 + Pstream::myProcNo()] = particles_.size();
     }
     reduce(sums, sumOp<scalarField>());

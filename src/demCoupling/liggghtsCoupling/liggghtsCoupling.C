@@ -144,11 +144,38 @@ void Foam::liggghtsCoupling::run(const label nSteps)
 }
 
 
-Foam::particleData Foam::liggghtsCoupling::particles() const
+Foam::labelList Foam::liggghtsCoupling::idOrder() const
+{
+    LAMMPS_NS::Atom& atom = *lmp_->atom;
+    const label n = atom.nlocal;
+    labelList order(n);
+    // ids up to about the count (the usual 1..N): walk them through the
+    // DEM's own id map, no sort
+    label k = 0;
+    if (atom.map_style && atom.map_tag_max <= 2*n + 16)
+    {
+        for (label id = 1; id <= atom.map_tag_max && k < n; ++id)
+        {
+            const label i = atom.map(id);
+            if (i >= 0 && i < n) order[k++] = i;
+        }
+    }
+    if (k != n)
+    {
+        labelList ids(n);
+        for (label i = 0; i < n; ++i) ids[i] = label(atom.tag[i]);
+        sortedOrder(ids, order);
+    }
+    return order;
+}
+
+
+Foam::particleData Foam::liggghtsCoupling::particles(const bool inIdOrder) const
 {
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
     LAMMPS_NS::Domain& domain = *lmp_->domain;
     const label n = atom.nlocal;
+    const labelList order(inIdOrder ? idOrder() : labelList());
     List<point> x(n);
     List<vector> v(n);
     List<scalar> r(n);
@@ -167,16 +194,17 @@ Foam::particleData Foam::liggghtsCoupling::particles() const
         }
         return !domain.triclinic;
     };
-    for (label i = 0; i < n; ++i)
+    for (label k = 0; k < n; ++k)
     {
+        const label i = inIdOrder ? order[k] : k;
         // between re-neighbourings LIGGGHTS lets atoms drift past a
         // periodic side; the mesh sees them wrapped into the box
         double xi[3] = {atom.x[i][0], atom.x[i][1], atom.x[i][2]};
         if (!inBox(xi)) domain.remap(xi);
-        x[i] = point(xi[0], xi[1], xi[2]);
-        v[i] = vector(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
-        r[i] = atom.radius[i];
-        id[i] = label(atom.tag[i]);
+        x[k] = point(xi[0], xi[1], xi[2]);
+        v[k] = vector(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
+        r[k] = atom.radius[i];
+        id[k] = label(atom.tag[i]);
     }
     particleData result(pointField(std::move(x)), scalarField(std::move(r)), std::move(id));
     result.setVelocities(vectorField(std::move(v)));

@@ -207,9 +207,18 @@ void Foam::particleFluidCoupling::readTimeSteps()
 void Foam::particleFluidCoupling::mapParticles()
 {
     clock_.timeIncrement();
-    const particleData owned(dem_->particles());
-    ownedIds_ = owned.ids();
-    particleHolders holders(distributor_->distribute(owned, particles_));
+    particleHolders holders;
+    if (Pstream::parRun())
+    {
+        const particleData owned(dem_->particles());
+        ownedIds_ = owned.ids();
+        holders = distributor_->distribute(owned, particles_);
+    }
+    else
+    {
+        // one rank holds all, in the id order the distributor would make
+        particles_ = dem_->particles(true);
+    }
     timeExchange_ += clock_.timeIncrement();
     voidFraction_->update(particles_, std::move(holders));
     timeVoidFraction_ += clock_.timeIncrement();

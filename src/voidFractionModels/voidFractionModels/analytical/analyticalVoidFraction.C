@@ -53,8 +53,9 @@ void Foam::voidFractionModels::analytical::distribute
     const UList<scalar>& r
 )
 {
-    // whole particles' volumes are spread while their row is in cache
-    const bool spread = spreadsRows(x.size());
+    // the volumes are spread while each row is in cache (the fractions
+    // are final as made: the holders' partial sums are combined later)
+    const bool spread = spreadAsMade_;
     forAll(x, p)
     {
         const label seed = centreCells_[p];

@@ -288,10 +288,10 @@ void Foam::voidFractionModel::spreadVolumes()
 
 void Foam::voidFractionModel::distributeToCentreCells()
 {
-    for (const label celli : centreCells_)
+    forAll(centreCells_, i)
     {
-        if (celli >= 0) weights_.append(celli, 1.0);
-        weights_.endParticle();
+        if (centreCells_[i] >= 0) weights_.append(centreCells_[i], 1.0);
+        endRow(i);
     }
 }
 

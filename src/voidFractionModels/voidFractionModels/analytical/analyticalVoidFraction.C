@@ -53,9 +53,6 @@ void Foam::voidFractionModels::analytical::distribute
     const UList<scalar>& r
 )
 {
-    // the volumes are spread while each row is in cache (the fractions
-    // are final as made: the holders' partial sums are combined later)
-    const bool spread = spreadAsMade_;
     forAll(x, p)
     {
         const label seed = centreCells_[p];
@@ -73,7 +70,6 @@ void Foam::voidFractionModels::analytical::distribute
             exactVolumes(x[p], r[p]);
             appendVolumes(r[p]);
         }
-        weights_.endParticle();
-        if (spread) spreadRow(p, 1);
+        endRow(p);
     }
 }

@@ -44,7 +44,6 @@ void Foam::voidFractionModels::hybrid::distribute
     const UList<scalar>& r
 )
 {
-
     crossed_.setSize(x.size());
     forAll(x, p)
     {
@@ -84,6 +83,6 @@ void Foam::voidFractionModels::hybrid::distribute
             const sphereOverlap::lattice L{{c.x() - R, c.y() - R, c.z() - R}, {h.x(), h.y(), h.z()}};
             appendLatticeSplit(seed, c, R, L, table_.get());
         }
-        weights_.endParticle();
+        endRow(p);
     }
 }

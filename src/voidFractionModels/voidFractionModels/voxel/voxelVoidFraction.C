@@ -59,7 +59,6 @@ void Foam::voidFractionModels::voxel::distribute
     const UList<scalar>& r
 )
 {
-
     forAll(x, p)
     {
         const label seed = centreCells_[p];
@@ -88,6 +87,6 @@ void Foam::voidFractionModels::voxel::distribute
             findSeeds(seed, x[p], r[p]);
             appendLatticeSplit(seed, x[p], r[p], L);
         }
-        weights_.endParticle();
+        endRow(p);
     }
 }

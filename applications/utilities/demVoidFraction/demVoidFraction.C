@@ -83,7 +83,10 @@ int main(int argc, char *argv[])
     particleHolders holders;
     if (dem.valid())
     {
-        holders = particleDistributor(model()).distribute(dem->particles(), particles);
+        holders = particleDistributor(model()).distribute
+        (
+            dem->particles(!Pstream::parRun()), particles
+        );
     }
     else
     {

@@ -207,18 +207,10 @@ void Foam::particleFluidCoupling::readTimeSteps()
 void Foam::particleFluidCoupling::mapParticles()
 {
     clock_.timeIncrement();
-    particleHolders holders;
-    if (Pstream::parRun())
-    {
-        const particleData owned(dem_->particles());
-        ownedIds_ = owned.ids();
-        holders = distributor_->distribute(owned, particles_);
-    }
-    else
-    {
-        // one rank holds all, in the id order the distributor would make
-        particles_ = dem_->particles(true);
-    }
+    // a serial run reads them in the id order it holds them in
+    particleData owned(dem_->particles(!Pstream::parRun()));
+    if (Pstream::parRun()) ownedIds_ = owned.ids();
+    particleHolders holders(distributor_->distribute(std::move(owned), particles_));
     timeExchange_ += clock_.timeIncrement();
     voidFraction_->update(particles_, std::move(holders));
     timeVoidFraction_ += clock_.timeIncrement();

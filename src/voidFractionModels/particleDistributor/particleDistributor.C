@@ -70,6 +70,27 @@ const Foam::labelList& Foam::particleDistributor::idOrder(const labelList& ids) 
 
 Foam::particleHolders Foam::particleDistributor::distribute
 (
+    particleData&& owned,
+    particleData& held
+) const
+{
+    if (!Pstream::parRun())
+    {
+        const labelList& ids = owned.ids();
+        bool ascending = true;
+        for (label i = 1; ascending && i < ids.size(); ++i) ascending = ids[i] > ids[i - 1];
+        if (ascending)
+        {
+            held = std::move(owned);
+            return particleHolders();
+        }
+    }
+    return distribute(static_cast<const particleData&>(owned), held);
+}
+
+
+Foam::particleHolders Foam::particleDistributor::distribute
+(
     const particleData& owned,
     particleData& held
 ) const

@@ -213,15 +213,17 @@ void Foam::voidFractionModel::gatherTurnSpread
     const Turn& turn
 )
 {
-    const label n = weights_.nParticles();
     if (smooths() || Pstream::parRun())
     {
-        Field<TypeA> a;
-        Field<TypeB> b;
-        gather(perCellA, a, perCellB, b);
+        // the sums are complete after the gather's exchange only
+        const label n = weights_.nParticles();
         Field<SpreadA> sa(n);
         Field<SpreadB> sb(n);
-        forAll(a, p) turn(p, a[p], b[p], sa[p], sb[p]);
+        gatherTurn
+        (
+            perCellA, perCellB,
+            [&](const label p, const TypeA& a, const TypeB& b) { turn(p, a, b, sa[p], sb[p]); }
+        );
         spread(sa, spreadA, sb, spreadB);
         return;
     }

@@ -5,7 +5,7 @@
 # A second run takes seconds.
 set -eu
 say() { printf '[setup] %s\n' "$*"; }
-need_pkgs="openfoam libopenfoam liggghts libliggghts-dev openmpi-bin libopenmpi-dev g++ make flex python3-numpy python3-matplotlib"
+need_pkgs="openfoam libopenfoam liggghts libliggghts-dev openmpi-bin libopenmpi-dev g++ make flex python3-numpy python3-matplotlib libscotch-dev libptscotch-dev libmetis-dev"
 sudo_=""; [ "$(id -u)" = 0 ] || sudo_="sudo"
 
 missing=""

@@ -4,29 +4,6 @@
 #include "boundBox.H"
 #include "volFields.H"
 
-namespace
-{
-    inline bool reaches
-    (
-        const sphereOverlap::vec3& lo,
-        const sphereOverlap::vec3& hi,
-        const sphereOverlap::vec3& c,
-        const double R
-    )
-    {
-        // plain comparisons: std::fmax is a library call
-        auto gap = [](double lo, double x, double hi)
-        {
-            return x < lo ? lo - x : (x > hi ? x - hi : 0.0);
-        };
-        const double dx = gap(lo.x, c.x, hi.x);
-        const double dy = gap(lo.y, c.y, hi.y);
-        const double dz = gap(lo.z, c.z, hi.z);
-        return dx*dx + dy*dy + dz*dz < R*R;
-    }
-}
-
-
 Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
 :
     mesh_(mesh),
@@ -123,23 +100,66 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
             )
         );
     }
+    markExitFaces();
 }
 
 
-void Foam::sphereCellOverlap::boundarySeeds
-(
-    const point& c,
-    const scalar R,
-    DynamicList<label>& seeds
-) const
+void Foam::sphereCellOverlap::markExitFaces()
 {
-    if (!boundaryTree_.valid()) return;
-    const treeBoundBox sphereBox(c - vector(R, R, R), c + vector(R, R, R));
-    const labelList hits(boundaryTree_->findBox(sphereBox));
-    for (const label i : hits)
+    // Boundary faces in the plane of an earlier one share its answer: a
+    // box or a slab has a handful of planes however many faces. Past
+    // maxPlanes distinct planes (jagged processor boundaries) a face counts
+    // as an exit without the test, which is safe: it only costs a search.
+    const label maxPlanes = 64;
+    const pointField& pts = mesh_.points();
+    const label nInternal = mesh_.nInternalFaces();
+    const scalar tol = 1e-9*boundBox(pts, false).mag();
+    exitFace_.setSize(mesh_.nFaces() - nInternal, true);
+    DynamicList<facePlane> planes;
+    DynamicList<bool> exits;
+    for (const label facei : boundaryFaces_)
     {
-        const label celli = mesh_.faceOwner()[boundaryFaces_[i]];
-        if (reachesBox(celli, c, R) && !seeds.found(celli)) seeds.append(celli);
+        bool& exit = exitFace_[facei - nInternal];
+        if (!planarFace_[facei]) continue;
+        const facePlane& fp = facePlanes_[facei];
+        label k = 0;
+        for (; k < planes.size(); ++k)
+        {
+            const facePlane& q = planes[k];
+            if
+            (
+                mag(q.offset - fp.offset) < tol
+             && sphereOverlap::dot(q.normal, fp.normal) > 1 - 1e-12
+            )
+            {
+                break;
+            }
+        }
+        if (k == planes.size())
+        {
+            if (planes.size() == maxPlanes) continue;
+            // the whole mesh on the inner (owner's) side of the plane
+            bool bounds = true;
+            for (const point& p : pts)
+            {
+                if (fp.offset - sphereOverlap::dot(fp.normal, toVec3(p)) < -tol)
+                {
+                    bounds = false;
+                    break;
+                }
+            }
+            planes.append(fp);
+            exits.append(!bounds);
+        }
+        exit = exits[k];
+    }
+    // faces on empty patches are never crossed
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (isA<emptyPolyPatch>(pp))
+        {
+            forAll(pp, i) exitFace_[pp.start() + i - nInternal] = false;
+        }
     }
 }
 
@@ -151,7 +171,7 @@ bool Foam::sphereCellOverlap::reachesBox
     const scalar R
 ) const
 {
-    return reaches(cellMin_[celli], cellMax_[celli], toVec3(c), R);
+    return boxReached(cellMin_[celli], cellMax_[celli], toVec3(c), R);
 }
 
 
@@ -208,7 +228,7 @@ Foam::scalar Foam::sphereCellOverlap::faceCone
     const face& f = mesh_.faces()[facei];
     const label n = f.size();
     auto pt = [&](std::size_t i) { return toVec3(pts[f[i]]); };
-    if (!reaches(faceMin_[facei], faceMax_[facei], c, R))
+    if (!boxReached(faceMin_[facei], faceMax_[facei], c, R))
     {
         return R*R*R/3.0*polygonSolidAngle(c, pt, n);
     }
@@ -283,7 +303,7 @@ Foam::scalar Foam::sphereCellOverlap::convexCellVolume
             p->face, doneCapFaces_, doneCaps_,
             [&](const label f)
             {
-                if (!reaches(faceMin_[f], faceMax_[f], c, R)) return 0.0;
+                if (!boxReached(faceMin_[f], faceMax_[f], c, R)) return 0.0;
                 const face& fp = mesh_.faces()[f];
                 return polygonCap
                 (
@@ -325,7 +345,7 @@ void Foam::sphereCellOverlap::overlaps
 (
     const point& c,
     const scalar R,
-    const labelUList& seeds,
+    const label centreCell,
     DynamicList<label>& cells,
     DynamicList<scalar>& volumes
 ) const
@@ -336,7 +356,7 @@ void Foam::sphereCellOverlap::overlaps
     doneCaps_.clear();
     forEachReachedCell
     (
-        c, R, seeds,
+        c, R, centreCell,
         [&](const label celli)
         {
             const scalar v = cellVolume(celli, c, R);

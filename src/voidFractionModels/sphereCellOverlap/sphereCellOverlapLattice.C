@@ -67,7 +67,7 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
     const point& c,
     const scalar R,
     const sphereOverlap::lattice& L,
-    const labelUList& seeds,
+    const label centreCell,
     DynamicList<label>& cells,
     DynamicList<label>& counts,
     const sphereOverlap::sphereLatticeTable* table
@@ -80,7 +80,7 @@ Foam::label Foam::sphereCellOverlap::latticeCounts
     general_.clear();
     forEachReachedCell
     (
-        c, R, seeds,
+        c, R, centreCell,
         [&](const label celli)
         {
             if (!isBox_[celli])

@@ -96,24 +96,16 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
 }
 
 
-void Foam::sphereWalkVoidFraction::findSeeds
+void Foam::sphereWalkVoidFraction::exactVolumes
 (
     const label centreCell,
     const point& c,
     const scalar R
 )
 {
-    seeds_.clear();
-    if (centreCell >= 0) seeds_.append(centreCell);
-    else overlap_.boundarySeeds(c, R, seeds_);
-}
-
-
-void Foam::sphereWalkVoidFraction::exactVolumes(const point& c, const scalar R)
-{
     cells_.clear();
     volumes_.clear();
-    if (seeds_.size()) overlap_.overlaps(c, R, seeds_, cells_, volumes_);
+    overlap_.overlaps(c, R, centreCell, cells_, volumes_);
 }
 
 
@@ -168,9 +160,9 @@ void Foam::sphereWalkVoidFraction::appendLatticeSplit
             }
         }
     }
-    else if (seeds_.size())
+    else
     {
-        total = overlap_.latticeCounts(c, R, L, seeds_, cells_, counts_, table);
+        total = overlap_.latticeCounts(c, R, L, centreCell, cells_, counts_, table);
     }
     if (total == 0)
     {

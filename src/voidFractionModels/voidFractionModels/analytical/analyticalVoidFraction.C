@@ -66,8 +66,7 @@ void Foam::voidFractionModels::analytical::distribute
         }
         else
         {
-            findSeeds(seed, x[p], r[p]);
-            exactVolumes(x[p], r[p]);
+            exactVolumes(seed, x[p], r[p]);
             appendVolumes(r[p]);
         }
         endRow(p);

@@ -69,14 +69,12 @@ void Foam::voidFractionModels::hybrid::distribute
         {
             if (!(locator_.isTensorGrid() && splitOnGrid(seed, c, R, 1)))
             {
-                findSeeds(seed, c, R);
-                exactVolumes(c, R);
+                exactVolumes(seed, c, R);
                 appendVolumes(R);
             }
         }
         else if (crossed_[p] != 0)
         {
-            findSeeds(seed, c, R);
             // 2D: one layer through the centre
             vector h = vector::one*2*R/resolution_;
             if (twoD_) h[emptyDir_] = 2*R;

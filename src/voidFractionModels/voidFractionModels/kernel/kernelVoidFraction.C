@@ -596,10 +596,9 @@ void Foam::voidFractionModels::kernel::walkWeights
     const scalar rc2 = sqr(rc);
     const scalar invB2 = 1/sqr(b);
     scalar sum = 0;
-    findSeeds(seed, c, rc);
     overlap_.forEachReachedCell
     (
-        c, rc, seeds_,
+        c, rc, seed,
         [&](const label celli)
         {
             const point& x = C[celli];

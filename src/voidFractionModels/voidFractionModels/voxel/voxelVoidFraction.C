@@ -84,7 +84,6 @@ void Foam::voidFractionModels::voxel::distribute
               + cmptMultiply(h, vector(0.1*sqrt(2.0), 0.1*sqrt(3.0), 0.1*sqrt(5.0)));
             if (twoD_) o[emptyDir_] = origin_[emptyDir_];
             const sphereOverlap::lattice L{{o.x(), o.y(), o.z()}, {h.x(), h.y(), h.z()}};
-            findSeeds(seed, x[p], r[p]);
             appendLatticeSplit(seed, x[p], r[p], L);
         }
         endRow(p);

@@ -298,6 +298,22 @@ def test_fluidised_bed():
             held = max(p[0] for p in par)
             check("%s: no rank holds every particle (at most %d of 10000)" % (model, held),
                   held < 7000)
+    print("  3 ranks decomposed by scotch (jagged subdomains through the periodic sides) against 1")
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                "numberOfSubdomains 3;\nmethod scotch;\n")
+    rc, out = sh("timeout 600 ./Allrun analytical 3 0.01 3", case, check=False)
+    check("scotch, 3 ranks: run completed", rc == 0, out[-800:] if rc else "")
+    log = os.path.join(case, "log.pimpleDEMFoam")
+    check_coupling_log("analytical, scotch 3 ranks", log, 0.2)
+    par = coupling_forces(log)
+    ser = coupling_forces(serial_logs["analytical"])[:len(par)]
+    check("scotch: 100 couplings on 3 ranks", len(par) >= 100 and len(ser) == len(par),
+          "(%d and %d)" % (len(par), len(ser)))
+    if len(par) and len(ser) == len(par):
+        diff = max(abs(p[1][2] - q[1][2]) for p, q in zip(par, ser))/max(abs(q[1][2]) for q in ser)
+        check("scotch: vertical fluid force on the bed, 3 ranks = 1 rank", diff < 1e-6,
+              "(largest relative difference %.1e)" % diff)
 
 
 def test_bad_input():

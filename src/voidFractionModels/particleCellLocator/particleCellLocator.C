@@ -109,6 +109,11 @@ Foam::particleCellLocator::particleCellLocator(const fvMesh& mesh)
             << grid_[0].size() - 1 << " x " << grid_[1].size() - 1 << " x "
             << grid_[2].size() - 1 << ", cells found by index arithmetic" << endl;
     }
+    // polyMesh::findCell builds the tetrahedra's base points on first use,
+    // synchronised over the processors: build them now on every rank (some
+    // ranks' cells may be tensor grids and others not), not later on only
+    // the ranks with a particle to search for
+    (void)mesh_.tetBasePtIs();
 }
 
 

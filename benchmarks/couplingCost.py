@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Time split of a coupling step of the fluidisedBed tutorial, on 1 and 2 ranks.
 
 Runs tutorials/fluidisedBed (10,000 beads, cells 3 d, couplingInterval 10

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Paired comparison of two builds on the fluidisedBed coupling step.
 
 A change to the coupling is often worth a few per cent of a stage, less

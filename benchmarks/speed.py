@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Speed of the six void fraction models per core.
 
 A dense polydisperse packing (jittered FCC lattice, radii uniform in
@@ -7,7 +8,7 @@ A dense polydisperse packing (jittered FCC lattice, radii uniform in
 hexahedron of the same size split into 6 tetrahedra). demVoidFraction
 times repeated calls after a warm-up; the median is reported, and each
 model's time relative to centroid on the same mesh in the same run. Every
-model runs with its defaults; voxel also at the issue's 50 voxels per sample
+model runs with its defaults; voxel also at Kalderon et al.'s 50 voxels per sample
 side and at 10 voxels per particle diameter. Five rounds over all models;
 the median over the rounds is reported.
 

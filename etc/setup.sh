@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 # Installs everything the project needs on a bare Debian 12 machine, idempotently:
 # the Debian packages (OpenFOAM v1912, LIGGGHTS 3.8.0, Open MPI), and the OpenFOAM headers and
 # wmake from Debian's openfoam source package, cached under $VFM_CACHE (default ~/.cache/voidFraction).

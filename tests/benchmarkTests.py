@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """voidFractionBenchmark: its Eq. 21 error against an independent computation
 from the fields demVoidFraction writes, its CSV, and bad input."""
 import csv

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Assertion counters and the checks the model test files share."""
 import math
 import os

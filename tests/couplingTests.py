@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """pimpleDEMFoam with LIGGGHTS: the tutorials against their independent
 references (Schiller-Naumann, Di Felice and Beetstra single-sphere drag,
 Ergun, bed weight, Wen-Yu), exact momentum exchange, restart, serial

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Every void fraction model on every kind of decomposition against the serial
 field: tetrahedral, Cartesian and polyhedral meshes, each decomposed by scotch
 (3 and 4 ranks), by simple across different directions (3 and 4 ranks) and

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Tests of the voxel, hybrid, kernel and diffusion models on real meshes.
 References: sums of sphere volumes, the analytical model's exact overlap
 (itself tested against closed forms and numerical integration), an
@@ -177,7 +178,7 @@ def gaussian_reference(centres, V, c, b, rc, walls):
 
 
 def test_kernel_reference():
-    print("kernel against an independent evaluation of the seed's Gaussian, walls reflected")
+    print("kernel against an independent evaluation of Kalderon et al.'s Gaussian, walls reflected")
     R = 0.0005
     b, cutoff = 0.004, 3
     # a side whose far faces' normals come out of the face areas a few ulp

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Helpers for the tests and benchmarks: make small OpenFOAM cases, write
 LIGGGHTS-style dumps, run the project's applications and read fields back."""
 import math

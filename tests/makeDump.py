@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Writes a LIGGGHTS-style text dump of random polydisperse spheres.
 
 usage: makeDump.py OUT N rmin rmax xmin xmax ymin ymax zmin zmax [seed] [--wall-gap]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Writes a tetrahedral OpenFOAM polyMesh of a box: a grid of n^3 hexahedra,
 interior points jittered, each hexahedron split into 6 tetrahedra around its
 main diagonal (a conforming split). One wall patch 'walls'.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """The model tests on real OpenFOAM meshes. Every check compares a number with
 an independent reference (sums of sphere volumes, closed forms, the serial
 run for the parallel one) and a tolerance. Ends with 'N passed, N failed'."""

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """The 2D (disk) variant on one-cell-thick meshes with empty front and back:
 closed forms (disk on a vertex or an edge: sectors with the cells' corner
 angles), conservation of the disk volumes pi r^2 T for all six models, the
-kernel against an independent evaluation of the seed's 2D Gaussian, voxel and
+kernel against an independent evaluation of Kalderon et al.'s 2D Gaussian, voxel and
 hybrid converging to analytical, independence of the particles' out-of-plane
 coordinate, serial against mpirun -np 2, and a 2D switch on a 3D mesh."""
 import math
@@ -110,7 +111,7 @@ def test_out_of_plane_coordinate():
 
 
 def test_kernel_reference():
-    print("2D kernel against an independent evaluation of the seed's Eq. 7, walls reflected")
+    print("2D kernel against an independent evaluation of Kalderon et al.'s Eq. 7, walls reflected")
     case = slab_case("2d-kref", shear=True)
     V = cell_volumes(case)
     C = cell_centres(case)

@@ -1,11 +1,12 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Run time against error and smoothness for the six void fraction models,
-after the seed's calibration study (its sections 4 and 5).
+after Kalderon et al.'s calibration study (its sections 4 and 5).
 
-1. LIGGGHTS makes the seed's samples L1.2a (8,262 frictionless spheres, size
+1. LIGGGHTS makes Kalderon et al.'s samples L1.2a (8,262 frictionless spheres, size
    distribution uniform by number, d60/d10 = 1.2) and L3a (22,600, d60/d10 =
    3; full study only), in periodic cubes compressed to a solid fraction of
-   0.62 (lengths x10 the seed's: the void fraction does not depend on scale).
+   0.62 (lengths x10 Kalderon et al.'s: the void fraction does not depend on scale).
 2. For X = 2..6 (cell size X times the largest diameter) a periodic blockMesh
    cube; voidFractionBenchmark runs every model over its parameter (voxel
    sub-division, hybrid resolution, kernel b/ds, diffusion coefficient) and
@@ -13,29 +14,29 @@ after the seed's calibration study (its sections 4 and 5).
    conservation and the median time per call; X = 3 also on 2 MPI ranks
    (the periodic box split across a periodic direction).
 2b. 2D: LIGGGHTS (dimension 2) packs 10,000 disks with radii from a Gaussian
-   (mean 1.75, sd 0.375, truncated to [1, 2.5] mm, after the seed's sample
+   (mean 1.75, sd 0.375, truncated to [1, 2.5] mm, after Kalderon et al.'s sample
    10000gr12p5fb0a) in a periodic square to an area fraction of 0.82; a
    one-cell-thick periodic mesh with empty front and back, twoDimensional
-   true, every model over its parameter around the seed's 2D calibrations.
+   true, every model over its parameter around Kalderon et al.'s 2D calibrations.
 3. Scale: 1,000 spheres of the same grading, then the periodic sample tiled
    k^3 times (8e3 to 1e6 particles), every model at its defaults, X = 3:
    time per particle against particle count.
 4. Writes build/study/results.csv and the plots pareto.png, smoothness.png,
    optimalParameter.png, scaling.png; prints the README table for X = 3.
 
-1b. Friction (the seed's Table 4 b and c samples): L1.2b, L1.2c, L3b, L3c
+1b. Friction (Kalderon et al.'s Table 4 b and c samples): L1.2b, L1.2c, L3b, L3c
    with friction 0.1 and 0.3, compressed at a constant strain rate until
    the pressure reaches P_STOP, so the friction sets the solid fraction
    (medium, loose); every model over its parameter at X = 2..6 (full study
    and --friction).
 
-1c. Bimodal (the seed's Table 5): B2a to B2d (size ratio 2, fines 20 to 35 %
+1c. Bimodal (Kalderon et al.'s Table 5): B2a to B2d (size ratio 2, fines 20 to 35 %
    by mass), B6a and B10a (ratio 6 and 10, fines 20 %), frictionless,
    compressed to P_STOP in boxes wide enough for two cells per side at X = 6
-   (B2), three at X = 3 (B6), two at X = 2 (B10, the seed's box); every
+   (B2), three at X = 3 (B6), two at X = 2 (B10, Kalderon et al.'s box); every
    model over its parameter (full study and --bimodal).
 
-1d. Cu = 6 (the seed's L6a, b, c): 59,183 spheres whose number fraction is
+1d. Cu = 6 (Kalderon et al.'s L6a, b, c): 59,183 spheres whose number fraction is
    linear in log d (sizes uniform by number cannot reach d60/d10 = 6),
    friction 0, 0.1, 0.3, compressed to P_STOP; every model over its
    parameter over X (full study and --cu6).
@@ -80,7 +81,7 @@ SWEEPS = [
 ]
 
 
-# the sweeps of the 2D sample, from the seed's 2D calibration (first: our 2D default)
+# the sweeps of the 2D sample, from Kalderon et al.'s 2D calibration (first: our 2D default)
 SWEEPS_2D = [
     ("centroid", None, [None]),
     ("voxel", "voxelsPerSide", [300, 100, 600]),
@@ -97,7 +98,7 @@ FRICTION_SAMPLES = [("L1.2b", 8262, 1.17e-3, 1.2, 0.1), ("L1.2c", 8262, 1.17e-3,
                     ("L3b", 22600, 1.48e-3, 3.0, 0.1), ("L3c", 22600, 1.48e-3, 3.0, 0.3)]
 P_STOP = 100
 
-# the seed's Cu = 6 samples (L6a, b, c: 59,183 spheres, friction 0, 0.1,
+# Kalderon et al.'s Cu = 6 samples (L6a, b, c: 59,183 spheres, friction 0, 0.1,
 # 0.3): sizes uniform by number cannot reach d60/d10 = 6, a number fraction
 # linear in log d can (d_max/d_min 23 with eight classes); smallest radius
 # 1.5 mm, so the DEM step is a fifth of its Rayleigh time (at 0.5 mm
@@ -105,12 +106,12 @@ P_STOP = 100
 CU6_SAMPLES = [("L6a", 59183, 1.5e-3, 6.0, 0.0), ("L6b", 59183, 1.5e-3, 6.0, 0.1),
                ("L6c", 59183, 1.5e-3, 6.0, 0.3)]
 
-# the seed's Table 5 bimodal samples: name, d_coarse/d_fine, fines content by
-# mass, box width in coarse diameters, solid fraction expected. The seed's
+# Kalderon et al.'s Table 5 bimodal samples: name, d_coarse/d_fine, fines content by
+# mass, box width in coarse diameters, solid fraction expected. Kalderon et al.'s
 # boxes are 4.3 to 4.9 coarse diameters wide (one or two cells at X >= 2);
 # ours hold two cells or more at X = 6 (B2) and three at X = 3 (B6: fines
 # are 54 per coarse sphere); B10a (250 fines per coarse sphere) keeps the
-# seed's 4.3 and so its two cells per side at X = 2 only. The seed's table
+# Kalderon et al.'s 4.3 and so its two cells per side at X = 2 only. Kalderon et al.'s table
 # fits these with d_coarse = 1 mm (its particle counts and mean diameters
 # give solid fractions of 0.69 for B2a and 0.84 for B6a with the fines
 # counted by mass, 0.55 and 0.31 by number).
@@ -176,7 +177,7 @@ def make_log_packing(name, n, r_min, cu, mu):
 
 
 def make_bimodal_packing(name, ratio, fines, width, phi):
-    """The seed's Table 5 samples: coarse and fine spheres, size ratio
+    """Kalderon et al.'s Table 5 samples: coarse and fine spheres, size ratio
     d_coarse/d_fine, fines content by mass, frictionless, compressed to
     P_STOP in a box about width coarse diameters wide (phi: the solid
     fraction expected, for the particle count)."""
@@ -314,7 +315,7 @@ def disk_study():
 
 
 def sweep_X(name, dump, L, r_max, sweeps, two_d=False):
-    """Every model over its parameter at X = 2..6 as the seed; a sample is
+    """Every model over its parameter at X = 2..6 as Kalderon et al.; a sample is
     only so many diameters wide, so cells per side are whole numbers and X
     lands near the target."""
     done = set()
@@ -345,7 +346,7 @@ def sphere_study(name, dump, L):
 
 
 def friction_study():
-    """The seed's b and c samples: the friction sets the solid fraction."""
+    """Kalderon et al.'s b and c samples: the friction sets the solid fraction."""
     for name, count, r_mean, cu, mu in FRICTION_SAMPLES:
         sphere_study(name, *make_packing(name, count, r_mean, cu, mu, p_stop=P_STOP))
 
@@ -364,13 +365,13 @@ def scale_study(dump, L, r_max, count):
 
 
 def cu6_study():
-    """The seed's Cu = 6 samples, every model over its parameter over X."""
+    """Kalderon et al.'s Cu = 6 samples, every model over its parameter over X."""
     for name, count, r_min, cu, mu in CU6_SAMPLES:
         sphere_study(name, *make_log_packing(name, count, r_min, cu, mu))
 
 
 def bimodal_study():
-    """The seed's bimodal samples, every model over its parameter at the X
+    """Kalderon et al.'s bimodal samples, every model over its parameter at the X
     that leave two cells per side or more."""
     for name, ratio, fines, width, phi in BIMODAL_SAMPLES:
         sphere_study(name, *make_bimodal_packing(name, ratio, fines, width, phi))
@@ -479,8 +480,8 @@ def plots(rows):
                 best.append((X, float(b["parameter"])))
             if best:
                 ax[k].plot(*zip(*best), "o-", label="least error, %s" % sample)
-        ax[k].axhline(seed_value, color="k", ls=":", label="seed's calibration, 3D")
-        ax[k].axhline(seed_2d, color="k", ls="--", label="seed's calibration, 2D")
+        ax[k].axhline(seed_value, color="k", ls=":", label="Kalderon et al.'s calibration, 3D")
+        ax[k].axhline(seed_2d, color="k", ls="--", label="Kalderon et al.'s calibration, 2D")
         ax[k].set_xlabel("X")
         ax[k].set_ylabel("b/ds" if model == "kernel" else "coefficient a")
         ax[k].set_title(model)
@@ -558,7 +559,7 @@ def main():
             return
     if os.path.exists(CSV):
         os.remove(CSV)
-    # the seed's Table 4 samples L1.2a and (full study) L3a, frictionless
+    # Kalderon et al.'s Table 4 samples L1.2a and (full study) L3a, frictionless
     samples = [("L1.2a", 8262, 1.17e-3, 1.2)] + ([] if QUICK else [("L3a", 22600, 1.48e-3, 3.0)])
     packed = {}
     for name, count, r_mean, cu in samples:

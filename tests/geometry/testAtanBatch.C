@@ -1,3 +1,9 @@
+/*---------------------------------------------------------------------------*\
+    voidFraction: unresolved CFD-DEM coupling for OpenFOAM and LIGGGHTS
+    Copyright (C) 2026 the voidFraction authors
+    License: GNU General Public License v3.0 or later (see LICENSE)
+    SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
 // The four-at-a-time arctangent of the analytical wedge against std::atan2:
 // error in units in the last place over the first quadrant (ratios from
 // 1e-13 to 1e13 and uniform ones), the axes, the diagonal, the origin, the

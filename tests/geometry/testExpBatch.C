@@ -1,3 +1,9 @@
+/*---------------------------------------------------------------------------*\
+    voidFraction: unresolved CFD-DEM coupling for OpenFOAM and LIGGGHTS
+    Copyright (C) 2026 the voidFraction authors
+    License: GNU General Public License v3.0 or later (see LICENSE)
+    SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
 // The batch exponential of the kernel model against std::exp: relative
 // error over the range the kernel uses and beyond, the ends of the range,
 // NaN, and a batch whose length is not a whole number of vectors.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Reading a fluidisedBed run: the particles of a VTK file, the bed weight
 per area, the inlet pressure history and the solver log's extremes."""
 import glob

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Bubbling bed: pressure drop against time next to the bed weight per area,
 and particle snapshots; prints the time-averaged pressure drop after the
 start-up (t > 0.4 s) and writes fluidisedBed.png and fluidisedBed.result."""

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """The stress test's table: for every model and cell size, whether the run
 finished, the smallest void fraction, the largest continuity error and
 Courant number, the time-averaged pressure drop against the bed weight and

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Packed bed through fluidisation: the coupled run's pressure drop against
 independent references: the Ergun equation for the bed's measured porosity
 (packed range), the buoyant bed weight per area (fluidised plateau), and the

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Plots the void fraction of the demo and checks the layer averages.
 
 The mesh is 5 x 5 x 10 box cells inside the DEM walls, so each horizontal

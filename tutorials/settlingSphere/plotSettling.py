@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Settling sphere: the coupled run's velocity history against the
 Schiller-Naumann single-sphere solution (an ODE integrated here with scipy,
 independent of the solver). Writes settling.png and settling.csv and prints

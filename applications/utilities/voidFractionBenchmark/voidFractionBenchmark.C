@@ -1,11 +1,17 @@
 /*---------------------------------------------------------------------------*\
+    voidFraction: unresolved CFD-DEM coupling for OpenFOAM and LIGGGHTS
+    Copyright (C) 2026 the voidFraction authors
+    License: GNU General Public License v3.0 or later (see LICENSE)
+    SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+/*---------------------------------------------------------------------------*\
 Application
     voidFractionBenchmark
 
 Description
     Accuracy, smoothness and cost of void fraction models on one case and
     one particle sample. For every run of system/voidFractionBenchmarkDict:
-    the error against the reference model (the seed's Eq. 21: the mean over
+    the error against the reference model (Kalderon et al., Eq. 21: the mean over
     cells of |n - n_ref|/n_ref, in %), the smoothness (its Eq. 22: the mean
     over cells of |grad n|, in 1/m), the conservation error, and the median
     time per call after a warm-up call, and the peak memory of the process
@@ -137,7 +143,7 @@ int main(int argc, char *argv[])
     const particleData particles(particleData::readLiggghtsDump(dumpFile));
     const scalar rMax = gMax(particles.radii());
 
-    // cell size as the seed's multiple X of the largest diameter
+    // cell size as Kalderon et al.'s multiple X of the largest diameter
     dictionary referenceDict(coupling);
     referenceDict.merge(benchDict.subDict("reference"));
     const bool twoD = referenceDict.getOrDefault<bool>("twoDimensional", false);

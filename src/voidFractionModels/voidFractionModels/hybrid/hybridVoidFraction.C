@@ -1,3 +1,9 @@
+/*---------------------------------------------------------------------------*\
+    voidFraction: unresolved CFD-DEM coupling for OpenFOAM and LIGGGHTS
+    Copyright (C) 2026 the voidFraction authors
+    License: GNU General Public License v3.0 or later (see LICENSE)
+    SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
 #include "hybridVoidFraction.H"
 #include "addToRunTimeSelectionTable.H"
 

@@ -16,12 +16,15 @@ Description
     outside the mesh and the time per call.
 
 Usage
-    demVoidFraction -dump FILE [-model NAME] [-name FIELD] [-repeat N]
+    demVoidFraction -dump FILE [-model NAME] [-name FIELD] [-repeat N] [-distribute]
     demVoidFraction -liggghts ...   (runs couplingProperties' demScript in-process)
         [-case DIR] [-parallel]
 
     -model overrides the dictionary's voidFractionModel; -repeat N calls the
     model N more times after a warm-up and reports the median time per call.
+    In parallel a dump's particles are held by every rank, unless
+    -distribute deals them out and sends each to the ranks whose cells it
+    reaches, as pimpleDEMFoam and -liggghts do.
 
 \*---------------------------------------------------------------------------*/
 
@@ -35,6 +38,12 @@ int main(int argc, char *argv[])
 {
     argList::addNote("Void fraction field from a LIGGGHTS dump");
     argList::addOption("dump", "file", "LIGGGHTS text dump (id x y z radius)");
+    argList::addBoolOption
+    (
+        "distribute",
+        "parallel -dump: deal the particles out to the ranks and map them through"
+        " the exchange pimpleDEMFoam uses (each rank holds only those near its cells)"
+    );
     argList::addBoolOption
     (
         "liggghts",
@@ -93,6 +102,21 @@ int main(int argc, char *argv[])
         (
             dem->particles(!Pstream::parRun()), particles
         );
+    }
+    else if (args.found("distribute") && Pstream::parRun())
+    {
+        // each rank owns every nProcs-th particle of the dump, as a DEM
+        // would own some, and keeps those its cells reach
+        const particleData all(particleData::readLiggghtsDump(dumpFile));
+        labelList mine;
+        for (label i = Pstream::myProcNo(); i < all.size(); i += Pstream::nProcs())
+        {
+            mine.append(i);
+        }
+        holders = particleDistributor(model()).distribute(all.reordered(mine), particles);
+        Info<< "Particles held: at most "
+            << returnReduce(particles.size(), maxOp<label>()) << " of " << all.size()
+            << " on a rank" << endl;
     }
     else
     {

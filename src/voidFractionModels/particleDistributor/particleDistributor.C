@@ -60,6 +60,23 @@ Foam::particleDistributor::particleDistributor(const voidFractionModel& model)
         }
         if (overlaps) alone_ = false;
     }
+    // the same decision on every rank: the boxes are the same everywhere
+    bool anyOverlap = false;
+    forAll(boxes_, a)
+    {
+        for (label b = a + 1; b < boxes_.size(); ++b)
+        {
+            bool overlaps = true;
+            for (const label d : directions_)
+            {
+                overlaps = overlaps
+                 && boxes_[a].min()[d] < boxes_[b].max()[d] - tol
+                 && boxes_[a].max()[d] > boxes_[b].min()[d] + tol;
+            }
+            anyOverlap = anyOverlap || overlaps;
+        }
+    }
+    if (anyOverlap) bins_.reset(new rankCellBins(mesh, all, directions_));
 }
 
 
@@ -130,12 +147,12 @@ Foam::particleHolders Foam::particleDistributor::distribute
         bool sent = false;
         for (label rank = 0; rank < nProcs; ++rank)
         {
-            bool reaches = meets(boxes_[rank], x[p], R);
-            for (label s = 0; !reaches && nearSide && s < shifts.size(); ++s)
+            bool near = reaches(rank, x[p], R);
+            for (label s = 0; !near && nearSide && s < shifts.size(); ++s)
             {
-                reaches = meets(boxes_[rank], x[p] + shifts[s], R);
+                near = reaches(rank, x[p] + shifts[s], R);
             }
-            if (reaches)
+            if (near)
             {
                 sends[rank].append(p);
                 sent = true;

@@ -277,6 +277,10 @@ def test_bad_input():
         "truncated": (good + "ITEM: ATOMS id x y z radius\n1 0.01 0.01 0.01 0.001\n", "found 1"),
         "short row": (good + "ITEM: ATOMS id x y z radius\n1 0.01 0.01 0.01 0.001\n2 0.01 0.01\n", "line 11"),
         "empty file": ("", "empty"),
+        "repeated id": (good + "ITEM: ATOMS id x y z radius\n7 0.01 0.01 0.01 0.001\n7 0.02 0.01 0.01 0.001\n",
+                        "line 11: atom id 7 again (first at line 10)"),
+        "snapshot without atoms": (good + "ITEM: ATOMS id x y z radius\n1 0.01 0.01 0.01 0.001\n"
+                                   "2 0.02 0.01 0.01 0.001\nITEM: TIMESTEP\n5\n", "line 12"),
     }
     for name, (text, needle) in bad.items():
         path = os.path.join(case, "bad.dump")
@@ -286,6 +290,56 @@ def test_bad_input():
               rc != 0 and "bad.dump" in out and needle in out and "Segmentation" not in out)
     rc, out = sh("demVoidFraction -dump missing.dump", case, check=False)
     check("missing dump file: error", rc != 0 and "missing.dump" in out)
+
+
+def test_dump_series():
+    print("a dump of several snapshots: each into its own time directory")
+    case = new_case(os.path.join(WORK, "series"), box_block_mesh(LO, HI, (6, 6, 6)))
+    snaps = []
+    for k in range(3):
+        c, r = random_spheres(200, 0.0005, 0.0015, LO, HI, seed=40 + k)
+        snaps.append((100 * k, c, r))
+    # the references: each snapshot alone, written into the start time
+    want = []
+    for step, c, r in snaps:
+        write_dump(os.path.join(case, "one.dump"), c, r)
+        rc, _ = sh("rm -rf 0 && demVoidFraction -dump one.dump", case, check=False)
+        want.append(read_scalar_field(os.path.join(case, "0", "voidfraction")) if rc == 0 else None)
+    text = ""
+    for step, c, r in snaps:
+        write_dump(os.path.join(case, "one.dump"), c, r)
+        text += open(os.path.join(case, "one.dump")).read().replace("TIMESTEP\n0\n", "TIMESTEP\n%d\n" % step)
+    open(os.path.join(case, "all.dump"), "w").write(text)
+    for step, c, r in snaps:
+        write_dump(os.path.join(case, "dump.%d" % step), c, r)
+        t = open(os.path.join(case, "dump.%d" % step)).read()
+        open(os.path.join(case, "dump.%d" % step), "w").write(t.replace("TIMESTEP\n0\n", "TIMESTEP\n%d\n" % step))
+
+    def fields(times):
+        return [read_scalar_field(os.path.join(case, t, "voidfraction"))
+                if os.path.exists(os.path.join(case, t, "voidfraction")) else None for t in times]
+
+    def same(a, b):
+        return a is not None and b is not None and max(abs(x - y) for x, y in zip(a, b)) < 1e-15
+
+    for label, cmd, times, expect in (
+            ("one file, every snapshot", "demVoidFraction -dump all.dump -deltaT 1e-5",
+             ("0", "0.001", "0.002"), [0, 1, 2]),
+            ("files dump.*, every snapshot", "demVoidFraction -dump 'dump.*' -deltaT 1e-5",
+             ("0", "0.001", "0.002"), [0, 1, 2]),
+            ("-latest", "demVoidFraction -dump all.dump -latest", ("200",), [2]),
+            ("-time 100", "demVoidFraction -dump all.dump -time 100", ("100",), [1])):
+        sh("rm -rf 0 0.00* 100 200", case)
+        rc, out = sh(cmd, case, check=False)
+        got = fields(times)
+        check("%s: each time = that snapshot mapped alone" % label,
+              rc == 0 and all(same(g, want[k]) for g, k in zip(got, expect)), out[-400:] if rc else "")
+        others = [t for t in ("0", "100", "200", "0.001", "0.002") if t not in times]
+        check("%s: no other time written" % label,
+              not any(os.path.exists(os.path.join(case, t, "voidfraction")) for t in others))
+        check("%s: progress per snapshot" % label, out.count("Snapshot ") == len(times))
+    rc, out = sh("demVoidFraction -dump all.dump -time 50", case, check=False)
+    check("-time selecting nothing: error", rc != 0 and "none of the 3 snapshots" in out)
 
 
 def test_keep_weights():
@@ -377,7 +431,7 @@ def test_centre_search():
 
 def main():
     checks.run([test_closed_forms, test_thin_neighbour, test_meshes, test_fast_against_general, test_cyclic,
-                test_alpha_min, test_parallel, test_keep_weights, test_centre_search, test_liggghts_in_process,
+                test_alpha_min, test_parallel, test_dump_series, test_keep_weights, test_centre_search, test_liggghts_in_process,
                 test_bad_input], sys.argv[1:])
     return checks.summary("models")
 

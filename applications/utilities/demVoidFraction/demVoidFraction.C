@@ -11,12 +11,20 @@ Application
 Description
     Computes the void fraction field of a case from a LIGGGHTS text dump with
     the model selected in constant/couplingProperties, writes "voidfraction"
-    into the time directory and prints the particle count, volumes, the
-    conservation error, min/max void fraction, the particles reaching
-    outside the mesh and the time per call.
+    and prints the particle count, volumes, the conservation error, min/max
+    void fraction, the particles reaching outside the mesh and the time per
+    call.
+
+    A dump of one snapshot is written into the case's start time. A dump of
+    several (one file written every N steps, or files 'dump.*' one per step,
+    given as a quoted pattern) maps every snapshot, or those -time selects,
+    or only the last with -latest, each into its own time directory: time =
+    TIMESTEP x -deltaT (default 1, i.e. the step number), with a progress
+    line per snapshot.
 
 Usage
     demVoidFraction -dump FILE [-model NAME] [-name FIELD] [-repeat N] [-distribute]
+        [-deltaT DT] [-time RANGES] [-latest]
     demVoidFraction -liggghts ...   (runs couplingProperties' demScript in-process)
         [-case DIR] [-parallel]
 
@@ -33,11 +41,73 @@ Usage
 #include "medianCallTime.H"
 #include "particleDistributor.H"
 #include "liggghtsCoupling.H"
+#include "liggghtsDumpReader.H"
+#include "scalarRanges.H"
+#include "wordRe.H"
+#include "fileNameList.H"
+#include "OSspecific.H"
+
+#include <algorithm>
+#include <cctype>
+#include <deque>
+#include <vector>
+
+namespace
+{
+    //- The files of a dump: the file itself, or those a pattern with * or ?
+    //  matches, in the order of the last number in their names
+    Foam::fileNameList dumpFiles(const Foam::fileName& pattern)
+    {
+        using namespace Foam;
+        const std::string name(pattern.name());
+        if (name.find_first_of("*?") == std::string::npos) return fileNameList(1, pattern);
+        std::string regex;
+        for (const char c : name)
+        {
+            if (c == '*') regex += ".*";
+            else if (c == '?') regex += '.';
+            else if (std::isalnum(static_cast<unsigned char>(c))) regex += c;
+            else { regex += '\\'; regex += c; }
+        }
+        const wordRe matcher(regex, wordRe::REGEX);
+        const fileName dir(pattern.path());
+        auto lastNumber = [](const std::string& s)
+        {
+            const auto end = s.find_last_of("0123456789");
+            if (end == std::string::npos) return -1.0;
+            auto begin = end;
+            while (begin > 0 && std::isdigit(static_cast<unsigned char>(s[begin - 1]))) --begin;
+            return std::stod(s.substr(begin, end - begin + 1));
+        };
+        std::vector<std::pair<double, fileName>> found;
+        for (const fileName& f : readDir(dir.empty() ? fileName(".") : dir, fileName::FILE, false))
+        {
+            if (matcher.match(f)) found.emplace_back(lastNumber(f), dir.empty() ? f : dir/f);
+        }
+        if (found.empty())
+        {
+            FatalErrorInFunction
+                << "no file matches the dump pattern " << pattern << exit(FatalError);
+        }
+        std::sort(found.begin(), found.end());
+        fileNameList files(found.size());
+        forAll(files, i) files[i] = found[i].second;
+        return files;
+    }
+}
+
 
 int main(int argc, char *argv[])
 {
     argList::addNote("Void fraction field from a LIGGGHTS dump");
-    argList::addOption("dump", "file", "LIGGGHTS text dump (id x y z radius)");
+    argList::addOption
+    (
+        "dump", "file",
+        "LIGGGHTS text dump (id x y z radius), or a quoted pattern such as 'post/dump.*'"
+    );
+    argList::addOption("deltaT", "s", "DEM time step: a snapshot's time is TIMESTEP x this");
+    argList::addOption("time", "ranges", "map only the snapshots at these times, e.g. '0.1:0.5,1'");
+    argList::addBoolOption("latest", "map only the last snapshot");
     argList::addBoolOption
     (
         "distribute",
@@ -90,41 +160,71 @@ int main(int argc, char *argv[])
     clockTime clock;
     autoPtr<liggghtsCoupling> dem;
     if (args.found("liggghts")) dem.reset(new liggghtsCoupling(runTime, dict));
-    const fileName dumpFile(args.getOrDefault<fileName>("dump", "").expand());
     autoPtr<voidFractionModel> model(voidFractionModel::New(dict, mesh));
-    // a dump is read whole on every rank; the DEM's particles go to the
-    // ranks whose cells they reach
-    particleData particles;
-    particleHolders holders;
+    const word fieldName(args.getOrDefault<word>("name", "voidfraction"));
+    const label repeat = args.getOrDefault<label>("repeat", 0);
+
+    // map particles (holders: who holds which) and write the field into
+    // the current time
+    auto mapAndWrite = [&](const particleData& particles, const particleHolders& holders)
+    {
+        clock.timeIncrement();
+        model->update(particles, particleHolders(holders));
+        const scalar firstCall = clock.timeIncrement();
+        model->report(Info);
+        Info<< "time per call: first " << firstCall << " s";
+        if (repeat > 0)
+        {
+            const scalar median = medianCallTime(model(), particles, repeat, holders);
+            Info<< ", median of " << repeat << " " << median << " s, "
+                << model->stats().nParticles/max(median, VSMALL) << " particles/s";
+        }
+        Info<< endl;
+        volScalarField out
+        (
+            IOobject(fieldName, runTime.timeName(), mesh),
+            model->voidFraction()
+        );
+        out.write();
+        Info<< "Wrote " << fieldName << " to " << runTime.timePath() << endl;
+    };
+
     if (dem.valid())
     {
-        holders = particleDistributor(model()).distribute
+        // the DEM's particles go to the ranks whose cells they reach
+        particleData particles;
+        const particleHolders holders
         (
-            dem->particles(!Pstream::parRun()), particles
+            particleDistributor(model()).distribute(dem->particles(!Pstream::parRun()), particles)
         );
+        Info<< "Read " << dem->nParticles() << " particles from LIGGGHTS in "
+            << clock.timeIncrement() << " s" << endl;
+        mapAndWrite(particles, holders);
+        Info<< "End" << endl;
+        return 0;
     }
-    else if (args.found("distribute") && Pstream::parRun())
+
+    // a dump is read whole on every rank; with -distribute each rank keeps
+    // the particles near its cells, as from a DEM
+    const bool distribute = args.found("distribute") && Pstream::parRun();
+    auto hold = [&](particleData&& all, particleData& particles)
     {
-        // each rank owns every nProcs-th particle of the dump, as a DEM
-        // would own some, and keeps those its cells reach
-        const particleData all(particleData::readLiggghtsDump(dumpFile));
+        if (!distribute)
+        {
+            particles = std::move(all);
+            return particleHolders();
+        }
         labelList mine;
         for (label i = Pstream::myProcNo(); i < all.size(); i += Pstream::nProcs())
         {
             mine.append(i);
         }
-        holders = particleDistributor(model()).distribute(all.reordered(mine), particles);
+        particleHolders holders(particleDistributor(model()).distribute(all.reordered(mine), particles));
         Info<< "Particles held: at most "
             << returnReduce(particles.size(), maxOp<label>()) << " of " << all.size()
             << " on a rank" << endl;
-    }
-    else
-    {
-        particles = particleData::readLiggghtsDump(dumpFile);
-    }
-    Info<< "Read " << (dem.valid() ? dem->nParticles() : particles.size()) << " particles from "
-        << (dem.valid() ? fileName("LIGGGHTS") : dumpFile)
-        << " in " << clock.timeIncrement() << " s" << endl;
+        return holders;
+    };
 
     if (args.found("previous"))
     {
@@ -132,30 +232,93 @@ int main(int argc, char *argv[])
         (
             particleData::readLiggghtsDump(args.get<fileName>("previous").expand())
         );
-        clock.timeIncrement();
     }
-    model->update(particles, particleHolders(holders));
-    const scalar firstCall = clock.timeIncrement();
-    model->report(Info);
 
-    const label repeat = args.getOrDefault<label>("repeat", 0);
-    Info<< "time per call: first " << firstCall << " s";
-    if (repeat > 0)
-    {
-        const scalar median = medianCallTime(model(), particles, repeat, holders);
-        Info<< ", median of " << repeat << " " << median << " s, "
-            << model->stats().nParticles/max(median, VSMALL) << " particles/s";
-    }
-    Info<< endl;
-
-    const word fieldName(args.getOrDefault<word>("name", "voidfraction"));
-    volScalarField out
+    const fileNameList files(dumpFiles(args.get<fileName>("dump").expand()));
+    const scalar deltaT = args.getOrDefault<scalar>("deltaT", 1);
+    const scalarRanges times
     (
-        IOobject(fieldName, runTime.timeName(), mesh),
-        model->voidFraction()
+        args.found("time") ? scalarRanges::parse(args["time"]) : scalarRanges()
     );
-    out.write();
-    Info<< "Wrote " << fieldName << " to " << runTime.timePath() << nl
-        << "End" << endl;
+    const bool latest = args.found("latest");
+
+    // the snapshots in order, one read ahead: a single snapshot goes into
+    // the start time, and -latest knows the last when nothing follows it
+    struct snapshot
+    {
+        label timestep;
+        particleData particles;
+        scalar read;    // fraction of the dump read once it was
+    };
+    std::deque<snapshot> ahead;
+    label nextFile = 0;
+    autoPtr<liggghtsDumpReader> reader;
+    auto readAhead = [&]()
+    {
+        particleData p;
+        while (true)
+        {
+            if (!reader.valid())
+            {
+                if (nextFile == files.size()) return;
+                reader.reset(new liggghtsDumpReader(files[nextFile++]));
+            }
+            if (reader->read(p)) break;
+            reader.clear();
+        }
+        const scalar read = (nextFile - 1 + reader->progress())/files.size();
+        ahead.push_back({reader->timestep(), std::move(p), min(max(read, scalar(0)), scalar(1))});
+    };
+    readAhead();
+    readAhead();
+    Info<< "Read " << ahead.front().particles.size() << " particles from " << files[0];
+    if (files.size() > 1) Info<< " (first of " << files.size() << " files)";
+    Info<< " in " << clock.timeIncrement() << " s" << endl;
+
+    if (ahead.size() == 1)
+    {
+        particleData particles;
+        const particleHolders holders(hold(std::move(ahead.front().particles), particles));
+        mapAndWrite(particles, holders);
+        Info<< "End" << endl;
+        return 0;
+    }
+
+    label nSeen = 0, nMapped = 0;
+    while (ahead.size())
+    {
+        snapshot now(std::move(ahead.front()));
+        ahead.pop_front();
+        readAhead();
+        ++nSeen;
+        const scalar t = now.timestep*deltaT;
+        if ((latest && ahead.size()) || (times.size() && !times.match(t))) continue;
+        runTime.setTime(t, nSeen);
+        particleData particles;
+        const particleHolders holders(hold(std::move(now.particles), particles));
+        const scalar elapsed = clock.elapsedTime();
+        const scalar done = now.read;
+        const label precision = Sout.precision(4);
+        Info<< nl << "Snapshot " << nSeen << ", TIMESTEP " << now.timestep << ", time "
+            << runTime.timeName() << ": " << label(100*done + 0.5) << " % of the dump read, "
+            << elapsed << " s elapsed";
+        if (done > 0 && done < 1)
+        {
+            Info<< ", about " << elapsed*(1 - done)/done << " s left";
+        }
+        Info<< endl;
+        Sout.precision(precision);
+        mapAndWrite(particles, holders);
+        ++nMapped;
+    }
+    if (nMapped == 0)
+    {
+        FatalErrorInFunction
+            << "none of the " << nSeen << " snapshots of " << args["dump"]
+            << " is at a time -time selects (times are TIMESTEP x deltaT " << deltaT << ")"
+            << exit(FatalError);
+    }
+    Info<< nl << "Mapped " << nMapped << " of " << nSeen << " snapshots in "
+        << clock.elapsedTime() << " s" << nl << "End" << endl;
     return 0;
 }

@@ -5,9 +5,20 @@ import glob
 import os
 import re
 
+import sys
+
 import numpy as np
 
-RHO_F, RHO_P, G, AREA = 1.2, 2500.0, 9.81, 0.048*0.006
+# tutorials/caseProperties.py, also from a copy of the case elsewhere
+sys.path.insert(0, os.path.join(os.environ.get("VFM_PROJECT_DIR",
+                                               os.path.join(os.path.dirname(os.path.abspath(__file__)), "../..")),
+                                "tutorials"))
+import caseProperties
+
+# the fluid and particles of this case (read where the script runs: the case)
+RHO_F = caseProperties.fluid()[1]
+RHO_P, G = caseProperties.particle_density(), caseProperties.gravity()
+AREA = 0.048*0.006
 
 
 def read_vtk(path):

@@ -9,8 +9,18 @@ import numpy as np
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+import os
+import sys
 
-rho_f, mu, rho_p, g = 1000.0, 1e-3, 2500.0, 9.81
+# tutorials/caseProperties.py, also from a copy of the case elsewhere
+sys.path.insert(0, os.path.join(os.environ.get("VFM_PROJECT_DIR",
+                                               os.path.join(os.path.dirname(os.path.abspath(__file__)), "../..")),
+                                "tutorials"))
+import caseProperties
+
+# the fluid and particles of this case, whatever they were set to
+nu, rho_f, mu = caseProperties.fluid()
+rho_p, g = caseProperties.particle_density(), caseProperties.gravity()
 area = 0.024*0.024
 
 

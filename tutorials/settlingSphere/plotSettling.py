@@ -12,8 +12,18 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-rho_f, nu, rho_p, d, g = 1000.0, 1e-6, 2500.0, 1e-3, 9.81
-mu = rho_f*nu
+import os
+
+# tutorials/caseProperties.py, also from a copy of the case elsewhere
+sys.path.insert(0, os.path.join(os.environ.get("VFM_PROJECT_DIR",
+                                               os.path.join(os.path.dirname(os.path.abspath(__file__)), "../..")),
+                                "tutorials"))
+import caseProperties
+
+# the fluid and the sphere of this case, whatever they were set to
+nu, rho_f, mu = caseProperties.fluid()
+rho_p, d = caseProperties.particle_density(), caseProperties.particle_diameter()
+g = caseProperties.gravity()
 
 
 def cd(re):

@@ -216,54 +216,6 @@ def test_packed_bed():
     check_coupling_log("packedBedErgun", os.path.join(case, "log.pimpleDEMFoam"), 0.2)
 
 
-def slab_porosity(case, lo, hi, area):
-    """exact porosity between two heights, from the particles' dump"""
-    lines = open(os.path.join(case, "DEM", "post", "initial.dump")).read().splitlines()
-    start = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
-    cols = lines[start].split()[2:]
-    data = np.array([l.split() for l in lines[start + 1:]], float)
-    z, r = data[:, cols.index("z")], data[:, cols.index("radius")]
-
-    def below(h):
-        t = np.clip(h - (z - r), 0, 2*r)
-        return np.pi*t*t*(3*r - t)/3
-    return 1 - np.sum(below(hi) - below(lo))/(area*(hi - lo))
-
-
-def test_dense_drag_laws():
-    print("DiFelice and Beetstra in the packed bed: pressure gradient against each law's fixed-bed form")
-    case = copy_tutorial("packedBedErgun", "packedBed-laws")
-    edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+\d+;", "endTime 0.6;")
-    sh("mkdir -p DEM/post && (cd DEM && liggghts -in in.packing -log post/log.packing "
-       "-screen post/screen.packing) && blockMesh", case)
-    lo, hi, dd, mu_w, rho_w = 0.009, 0.033, 2e-3, 1e-3, 1000.0
-    for law in ("DiFelice", "Beetstra"):
-        sh("rm -rf 0 0.[1-9]* postProcessing && cp -r 0.orig 0", case)
-        edit(os.path.join(case, "constant", "couplingProperties"), r"^dragModel\s+\w+;", "dragModel %s;" % law)
-        rc, out = sh("pimpleDEMFoam > log.%s 2>&1" % law, case, check=False)
-        check("%s: run completed" % law, rc == 0)
-        eps = slab_porosity(case, lo, hi, 0.024*0.024)
-        probe = np.loadtxt(os.path.join(case, "postProcessing", "bedProbes", "0", "p"))
-        t = probe[:, 0]
-        use = t > 0.3
-        grad = rho_w*(probe[use, 1] - probe[use, 2])/(hi - lo)
-        Us = 0.04*t[use]/2           # the inlet ramp
-        re = rho_w*Us*dd/mu_w
-        phi = 1 - eps
-        if law == "DiFelice":
-            chi = 3.7 - 0.65*np.exp(-0.5*(1.5 - np.log10(re))**2)
-            cd = (0.63 + 4.8/np.sqrt(re))**2
-            ref = 0.75*phi*cd*rho_w*Us**2*eps**(-chi - 1)/dd
-        else:
-            F = (10*phi/eps**2 + eps**2*(1 + 1.5*np.sqrt(phi))
-                 + 0.413*re/(24*eps**2)*(1/eps + 3*eps*phi + 8.4*re**-0.343)
-                 / (1 + 10**(3*phi)*re**(-(1 + 4*phi)/2)))
-            ref = 18*phi*mu_w*Us*F/(eps*dd*dd)
-        err = np.max(np.abs(grad - ref)/ref)
-        check("%s: pressure gradient inside the bed within 10 %% of the law (porosity %.3f)" % (law, eps),
-              err < 0.10, "(largest %.1f %%)" % (100*err))
-
-
 def test_fluidised_bed():
     print("fluidisedBed tutorial: 10,000 beads in air, 2 s")
     case = copy_tutorial("fluidisedBed", "fluidisedBed")
@@ -390,7 +342,7 @@ def test_bad_input():
 
 def main():
     checks.run([test_settling_sphere, test_drag_laws, test_restart, test_serial_parallel,
-                test_bad_input, test_packed_bed, test_dense_drag_laws,
+                test_bad_input, test_packed_bed,
                 test_fluidised_bed], sys.argv[1:])
     return checks.summary("coupling")
 

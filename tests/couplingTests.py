@@ -308,6 +308,18 @@ def test_bad_input():
         check("%s: error says '%s'" % (name, needle),
               rc not in (0, 124) and needle in out and "Segmentation" not in out,
               "" if needle in out else out[-600:])
+    # an error LIGGGHTS ends with MPI_Abort: the log names the screen file
+    # before the DEM starts, and the reason is there
+    case = os.path.join(WORK, "settle-bad-case")
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(base, case)
+    edit(os.path.join(case, "DEM", "in.settings"), r"youngsModulus peratomtype 5.e6", "youngsModulus peratomtype 1.e6")
+    rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
+    screen = os.path.join(case, "DEM", "log.liggghtsScreen")
+    reason = open(screen).read() if os.path.isfile(screen) else ""
+    check("LIGGGHTS error that aborts: the log names DEM/log.liggghtsScreen, which says why",
+          rc not in (0, 124) and "log.liggghtsScreen" in out and "youngsModulus >= 5e6" in reason,
+          "" if rc not in (0, 124) else out[-600:])
     # in parallel a LIGGGHTS error stops every rank
     case = os.path.join(WORK, "settle-bad-case")
     shutil.rmtree(case, ignore_errors=True)

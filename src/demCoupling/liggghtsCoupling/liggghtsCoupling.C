@@ -113,6 +113,10 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
     };
     char* argv[] = {&args[0][0], &args[1][0], &args[2][0], &args[3][0],
         &args[4][0], &args[5][0], &args[6][0], &args[7][0]};
+    // said first: an error LIGGGHTS ends with MPI_Abort leaves no exit
+    // handler a chance, and its reason is on this screen only
+    Info<< "liggghtsCoupling: running " << path << " (LIGGGHTS screen output in "
+        << demDir_/screen << ")" << endl;
     inDemDir
     (
         [&]()
@@ -125,8 +129,7 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
         },
         "running " + path
     );
-    Info<< "liggghtsCoupling: ran " << path << ": " << nParticles()
-        << " particles (LIGGGHTS screen output in " << demDir_/screen << ")" << endl;
+    Info<< "liggghtsCoupling: " << nParticles() << " particles" << endl;
 }
 
 

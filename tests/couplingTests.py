@@ -352,9 +352,58 @@ def test_bad_input():
           rc == 0 and "removing 1 particles" in out and "coupling 19: 0 particles" in out, out[-400:] if rc else "")
 
 
+def test_parcels():
+    print("coarse-grained parcels: a 2 mm parcel of 1 mm spheres (h = 2) settling in water")
+    def run(dest, diameter, coarse):
+        case = copy_tutorial("settlingSphere", dest)
+        # cells of 16 mm: the parcel's own fluid fraction stays 0.999
+        edit(os.path.join(case, "system", "blockMeshDict"), r"^scale\s+0.001;", "scale 0.002;")
+        edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+0.4;", "endTime 0.25;")
+        edit(os.path.join(case, "DEM", "in.liggghts"), r"block 0 0.04 0 0.04 0 0.096", "block 0 0.08 0 0.08 0 0.192")
+        edit(os.path.join(case, "DEM", "in.liggghts"), r"single 0.02 0.02 0.085", "single 0.04 0.04 0.17")
+        if diameter != 1e-3:
+            edit(os.path.join(case, "DEM", "in.liggghts"), r"diameter 0.001 ", "diameter %g " % diameter)
+        if coarse:
+            with open(os.path.join(case, "constant", "couplingProperties"), "a") as f:
+                f.write("coarseGraining { %s }\n" % coarse)
+        sh("cp -r 0.orig 0 && blockMesh", case)
+        rc, out = sh("pimpleDEMFoam > log.pimpleDEMFoam 2>&1", case, check=False)
+        check("%s: run completed" % dest, rc == 0)
+        return case, (-history(case)[-1, 2] if rc == 0 else float("nan"))
+
+    _, single = run("parcel-single", 1e-3, None)
+    case, cubic = run("parcel-cubic", 2e-3, "factor 2; forceScaling cubic;")
+    # the parcel stirs its cell eight times as hard: the fluid follows it a little more
+    near("cubic: the parcel settles as one of its particles (parcel / 1 mm sphere, same mesh)", cubic/single, 1.0, 1e-2)
+    near("cubic: parcel terminal velocity / Schiller-Naumann for 1 mm", cubic/terminal_velocity(cd_schiller_naumann),
+         1.0, 0.02)
+    check_coupling_log("cubic parcels", os.path.join(case, "log.pimpleDEMFoam"), 0.99)
+
+    # exact: drag, pressure gradient force and buoyancy h^2 those of one
+    # particle, the parcel's weight h^3 (gravity left as it is):
+    # F_SN(v) = (h rho_p - rho_f) V g
+    def excess(v):
+        re = rho_f*v*d/mu
+        return (2*rho_p - rho_f)*g*math.pi*d**3/6 - 0.5*cd_schiller_naumann(re)*rho_f*math.pi*d*d/4*v*v
+    _, exact = run("parcel-exact", 2e-3, "factor 2; forceScaling exact;")
+    near("exact: parcel terminal velocity / h^2 Schiller-Naumann against h^3 weight", exact/brentq(excess, 1e-5, 5.0),
+         1.0, 0.02)
+    case = copy_tutorial("settlingSphere", "parcel-bad")
+    sh("cp -r 0.orig 0 && blockMesh", case)
+    for body, needle in (("factor 0.5;", "is below 1"), ("factor (2 3);", "one number"),
+                         ("factor 2; forceScaling quadratic;", "quadratic"), ("forceScaling cubic;", "has no factor")):
+        props = os.path.join(case, "constant", "couplingProperties")
+        text = open(props).read().split("coarseGraining")[0]
+        with open(props, "w") as f:
+            f.write(text + "coarseGraining { %s }\n" % body)
+        rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
+        check("coarseGraining { %s }: error says '%s'" % (body, needle),
+              rc not in (0, 124) and needle in out and "coarseGraining" in out, "" if needle in out else out[-500:])
+
+
 def main():
     checks.run([test_settling_sphere, test_drag_laws, test_restart, test_serial_parallel,
-                test_bad_input, test_packed_bed,
+                test_bad_input, test_parcels, test_packed_bed,
                 test_fluidised_bed], sys.argv[1:])
     return checks.summary("coupling")
 

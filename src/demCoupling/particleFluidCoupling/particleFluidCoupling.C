@@ -65,6 +65,7 @@ Foam::particleFluidCoupling::particleFluidCoupling
     pressureGradientForce_(false),
     buoyancy_(false),
     removeOutside_(false),
+    parcels_(dict_),
     demStepsPerCoupling_(0),
     fluidStepsPerCoupling_(1),
     fluidStep_(0),
@@ -161,6 +162,12 @@ Foam::particleFluidCoupling::particleFluidCoupling
     mapParticles();
     alpha_ = voidFraction_->voidFraction();
     alpha_.oldTime();
+    if (parcels_.active())
+    {
+        Info<< "particleFluidCoupling: coarse-grained parcels, factor "
+            << parcels_.factor() << ", forces scaled "
+            << parcelScaling::lawNames[parcels_.forceScaling()] << endl;
+    }
     Info<< "particleFluidCoupling: formulation " << form << ", "
         << voidFraction_->stats().nParticles << " particles" << endl;
 }
@@ -341,9 +348,14 @@ void Foam::particleFluidCoupling::beginStep
                 else
                 {
                     const scalar a = alphaP/s;
-                    beta = drag_->beta
+                    // a parcel: the law for one of its particles, scaled
+                    beta = parcels_.dragFactor()*drag_->beta
                     (
-                        {2*particles_.radii()[i], volumes[i], a, mag(Up/s - v[i]), rho_, mu}
+                        {
+                            parcels_.particleDiameter(2*particles_.radii()[i]),
+                            parcels_.particleVolume(volumes[i]),
+                            a, mag(Up/s - v[i]), rho_, mu
+                        }
                     );
                     if (formulation_ == formulation::B) beta /= a;
                 }
@@ -393,11 +405,12 @@ void Foam::particleFluidCoupling::endStep
     {
         const vector drag(beta_[i]*(Up - weightSum_[i]*v[i]));
         vector f(F[i] + drag);
+        const scalar volume = parcels_.volumeForceFactor()*volumes[i];
         if (pressureGradientForce_ && weightSum_[i] > SMALL)
         {
-            f -= rho_*volumes[i]*gradP/weightSum_[i];
+            f -= rho_*volume*gradP/weightSum_[i];
         }
-        if (buoyancy_) f -= rho_*volumes[i]*g_;
+        if (buoyancy_) f -= rho_*volume*g_;
         F[i] = f;
         const bool counted = holders.counted(i);
         if (counted) dragSum += drag;

@@ -38,6 +38,18 @@ def edit(path, pattern, replacement):
         f.write(new)
 
 
+def set_dem(case, **values):
+    """Set variables of the case's DEM/in.parameters (dimensions kept)"""
+    path = os.path.join(case, "DEM", "in.parameters")
+    text = open(path).read()
+    for name, value in values.items():
+        text, n = re.subn(r"(?m)^(variable\s+%s\s+equal\s+)\S+" % name, r"\g<1>%r" % value, text)
+        if n != 1:
+            raise RuntimeError("%s: no variable %s" % (path, name))
+    with open(path, "w") as f:
+        f.write(text)
+
+
 def results(path):
     return {k: float(v) for k, v in (l.split() for l in open(path))}
 
@@ -294,7 +306,7 @@ def test_bad_input():
          "LIGGGHTS stopped the run"),
         ("DEM script without couple/cfd/force", "DEM/in.settings", r"^fix cfd2 .*$", "",
          "has no 'fix couple/cfd/force'"),
-        ("particle outside the mesh", "DEM/in.liggghts", r"0.02 0.02 0.085", "0.02 0.02 0.15",
+        ("particle outside the mesh", "DEM/in.parameters", r"^variable releaseZ .*$", "variable releaseZ equal 0.15",
          "particles have left the mesh"),
     ]
     for name, rel, pattern, replacement, needle in cases:
@@ -303,7 +315,7 @@ def test_bad_input():
         shutil.copytree(base, case)
         edit(os.path.join(case, rel), pattern, replacement)
         if "outside" in name:
-            edit(os.path.join(case, "DEM", "in.liggghts"), r"0 0.04 0 0.04 0 0.096", "0 0.04 0 0.04 0 0.2")
+            set_dem(case, boxHeight=0.2)
         rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
         check("%s: error says '%s'" % (name, needle),
               rc not in (0, 124) and needle in out and "Segmentation" not in out,
@@ -313,7 +325,7 @@ def test_bad_input():
     case = os.path.join(WORK, "settle-bad-case")
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(base, case)
-    edit(os.path.join(case, "DEM", "in.settings"), r"youngsModulus peratomtype 5.e6", "youngsModulus peratomtype 1.e6")
+    set_dem(case, youngs=1e6)
     rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
     screen = os.path.join(case, "DEM", "log.liggghtsScreen")
     reason = open(screen).read() if os.path.isfile(screen) else ""
@@ -337,8 +349,7 @@ def test_bad_input():
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(base, case)
     edit(os.path.join(case, props), r"^particlesOutside\s+error;", "particlesOutside remove;")
-    edit(os.path.join(case, "DEM", "in.liggghts"), r"0 0.04 0 0.04 0 0.096", "0 0.04 0 0.04 0 0.2")
-    edit(os.path.join(case, "DEM", "in.liggghts"), r"0.02 0.02 0.085", "0.02 0.02 0.15")
+    set_dem(case, boxHeight=0.2, releaseZ=0.15)
     edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+0.4;", "endTime 0.01;")
     rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
     check("particlesOutside remove: the particle is deleted from the DEM and the run goes on",
@@ -359,10 +370,7 @@ def test_parcels():
         # cells of 16 mm: the parcel's own fluid fraction stays 0.999
         edit(os.path.join(case, "system", "blockMeshDict"), r"^scale\s+0.001;", "scale 0.002;")
         edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+0.4;", "endTime 0.25;")
-        edit(os.path.join(case, "DEM", "in.liggghts"), r"block 0 0.04 0 0.04 0 0.096", "block 0 0.08 0 0.08 0 0.192")
-        edit(os.path.join(case, "DEM", "in.liggghts"), r"single 0.02 0.02 0.085", "single 0.04 0.04 0.17")
-        if diameter != 1e-3:
-            edit(os.path.join(case, "DEM", "in.liggghts"), r"diameter 0.001 ", "diameter %g " % diameter)
+        set_dem(case, boxWidth=0.08, boxHeight=0.192, releaseXY=0.04, releaseZ=0.17, diameter=diameter)
         if coarse:
             with open(os.path.join(case, "constant", "couplingProperties"), "a") as f:
                 f.write("coarseGraining { %s }\n" % coarse)

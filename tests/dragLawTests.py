@@ -17,6 +17,7 @@ from scipy.optimize import brentq
 import checks
 from checks import WORK, check, near
 from foamCase import ROOT, sh
+from couplingTests import set_dem
 
 RHO, NU = 1000.0, 1e-6
 MU = RHO*NU
@@ -245,10 +246,9 @@ def test_settling_spheres():
            "sed -i 's/^endTime .*/endTime %g;/' system/controlDict && "
            "sed -i 's/^scale .*/scale %g;/' system/blockMeshDict && blockMesh > log.blockMesh" % (nu, end, scale),
            case)
-        # the tutorial's box and release point, in mesh units (scale)
-        sh("sed -i 's/block 0 0.04 0 0.04 0 0.096/block 0 %g 0 %g 0 %g/; "
-           "s/single 0.02 0.02 0.085/single %g %g %g/; s/diameter 0.001 /diameter %g /' DEM/in.liggghts"
-           % (40*scale, 40*scale, 96*scale, 20*scale, 20*scale, 85*scale, d), case)
+        # the tutorial's box and release point, scaled with the mesh
+        s = scale/0.001
+        set_dem(case, boxWidth=0.04*s, boxHeight=0.096*s, releaseXY=0.02*s, releaseZ=0.085*s, diameter=d)
         rc, out = sh("pimpleDEMFoam > log.pimpleDEMFoam 2>&1", case, check=False)
         check("Re %.3g: run completed" % re, rc == 0)
         if rc:

@@ -3,7 +3,7 @@
 that the plots compare with the fluid and particles actually simulated:
 nu and rho from constant/transportProperties, |g| from constant/g, and the
 particle density (and diameter, where the script sets one) from the DEM
-input scripts in DEM/."""
+input scripts in DEM/, with the variables of DEM/in.parameters."""
 import glob
 import os
 import re
@@ -37,9 +37,21 @@ def gravity(case="."):
     return sum(float(v)**2 for v in m.groups())**0.5
 
 
+def dem_parameters(case="."):
+    """The variables of DEM/in.parameters ('variable NAME equal NUMBER')"""
+    path = os.path.join(case, "DEM", "in.parameters")
+    if not os.path.isfile(path):
+        return {}
+    found = re.findall(r"(?m)^\s*variable\s+(\S+)\s+equal\s+%s" % NUMBER, open(path).read())
+    return {k: float(v) for k, v in found}
+
+
 def _dem(case, pattern, what):
+    variables = dem_parameters(case)
     for path in sorted(glob.glob(os.path.join(case, "DEM", "in.*"))):
-        m = re.search(pattern, re.sub(r"#.*", "", open(path).read()))
+        text = re.sub(r"#.*", "", open(path).read())
+        text = re.sub(r"\$\{(\w+)\}", lambda v: repr(variables.get(v.group(1), v.group(0))), text)
+        m = re.search(pattern, text)
         if m:
             return float(m.group(1))
     raise SystemExit("caseProperties: no particle %s in %s" % (what, os.path.join(case, "DEM", "in.*")))

@@ -1,0 +1,404 @@
+/*---------------------------------------------------------------------------*\
+    voidFraction: unresolved CFD-DEM coupling for OpenFOAM and LIGGGHTS
+    Copyright (C) 2026 the voidFraction authors
+    License: GNU General Public License v3.0 or later (see LICENSE)
+    SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "caseScaler.H"
+#include "exactScaling.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "IOstreams.H"
+#include "dimensionedScalar.H"
+#include "primitiveEntry.H"
+#include "Time.H"
+#include "pointIOField.H"
+#include "polyMesh.H"
+#include "stringOps.H"
+#include <cctype>
+#include <fstream>
+#include <vector>
+#include <regex>
+#include <sstream>
+
+namespace
+{
+    bool holdsNumber(const Foam::entry& e)
+    {
+        if (!e.isStream()) return false;
+        for (const Foam::token& t : e.stream())
+        {
+            if (t.isNumber()) return true;
+        }
+        return false;
+    }
+
+    bool timeBased(const Foam::dictionary& dict, const Foam::word& control)
+    {
+        const Foam::word c(dict.getOrDefault<Foam::word>(control, "timeStep"));
+        return c == "runTime" || c == "adjustableRunTime";
+    }
+}
+
+
+Foam::caseScaler::caseScaler(const fileName& dir, const scalar h)
+:
+    h_(h),
+    dir_(dir)
+{}
+
+
+Foam::dictionary Foam::caseScaler::read(const fileName& file) const
+{
+    IFstream is(file);
+    if (!is.good())
+    {
+        FatalErrorInFunction << "cannot read " << file << exit(FatalError);
+    }
+    return dictionary(is, true);
+}
+
+
+void Foam::caseScaler::write(const fileName& file, const dictionary& dict) const
+{
+    OFstream os(file);
+    os.precision(15);
+    os  << "// written by scaleCase -factor " << h_ << nl << nl;
+    dict.write(os, false);
+}
+
+
+void Foam::caseScaler::scaleEntry
+(
+    dictionary& dict,
+    const word& key,
+    const scalar f,
+    const fileName& where
+) const
+{
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (!e || !e->isStream()) return;
+    tokenList tokens(static_cast<const tokenList&>(e->stream()));
+    const bool table = tokens.size() && tokens[0].isWord() && tokens[0].wordToken() == "table";
+    label depth = 0;
+    bool rowStart = false, listSize = false;
+    for (token& t : tokens)
+    {
+        if (t.isPunctuation())
+        {
+            if (t.pToken() == token::BEGIN_LIST && ++depth == 2 && table) rowStart = true;
+            if (t.pToken() == token::END_LIST) --depth;
+            continue;
+        }
+        if (t.isWord())
+        {
+            const word& w = t.wordToken();
+            if (w.startsWith("List<")) { listSize = true; continue; }
+            if (w == "uniform" || w == "nonuniform" || w == "table" || w == "constant") continue;
+            FatalErrorInFunction
+                << where << ": entry " << key << " holds '" << w << "'; scaleCase"
+                << " scales uniform and nonuniform values, tables and constants"
+                << exit(FatalError);
+        }
+        if (!t.isNumber()) continue;
+        if (listSize && t.isLabel()) { listSize = false; continue; }
+        const scalar m = (table && rowStart) ? h_ : f;
+        rowStart = false;
+        t = token(doubleScalar(t.number()*m));
+    }
+    dict.set(new primitiveEntry(key, ITstream(key, tokens)));
+}
+
+
+void Foam::caseScaler::requireKnown
+(
+    const dictionary& dict,
+    const wordList& scaled,
+    const wordList& unchanged,
+    const fileName& where
+) const
+{
+    for (const entry& e : dict)
+    {
+        if (e.keyword() == "FoamFile" || !holdsNumber(e)) continue;
+        if (!scaled.found(e.keyword()) && !unchanged.found(e.keyword()))
+        {
+            FatalErrorInFunction
+                << where << ": entry " << e.keyword() << " holds a number whose"
+                << " dimensions scaleCase does not know; it scales "
+                << scaled << " and leaves " << unchanged << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::caseScaler::scaleField(const fileName& file) const
+{
+    dictionary dict(read(file));
+    const word cls(dict.subDict("FoamFile").get<word>("class"));
+    const dimensionSet dims(dict.lookup("dimensions"));
+    const scalar f = exactScaling::factor(dims, h_, file.name());
+    if (cls.startsWith("uniformDimensioned"))
+    {
+        scaleEntry(dict, "value", f, file);
+        requireKnown(dict, {"value"}, {"dimensions"}, file);
+        write(file, dict);
+        return;
+    }
+    scaleEntry(dict, "internalField", f, file);
+    const wordList values
+        ({"value", "inletValue", "refValue", "uniformValue", "uniformInletValue", "freestreamValue"});
+    const wordList gradients({"gradient", "refGradient", "uniformGradient"});
+    dictionary& boundary = dict.subDict("boundaryField");
+    for (entry& patch : boundary)
+    {
+        if (!patch.isDict()) continue;
+        dictionary& pd = patch.dict();
+        for (const word& k : values) scaleEntry(pd, k, f, file/patch.keyword());
+        for (const word& k : gradients) scaleEntry(pd, k, f/h_, file/patch.keyword());
+        wordList known(values);
+        known.append(gradients);
+        requireKnown(pd, known, {"valueFraction"}, file/patch.keyword());
+    }
+    write(file, dict);
+}
+
+
+void Foam::caseScaler::scaleControlDict() const
+{
+    const fileName file(dir_/"system"/"controlDict");
+    dictionary dict(read(file));
+    wordList times({"startTime", "endTime", "deltaT", "maxDeltaT"});
+    wordList unchanged({"writePrecision", "timePrecision", "purgeWrite", "maxCo", "maxAlphaCo"});
+    (timeBased(dict, "writeControl") ? times : unchanged).append("writeInterval");
+    for (const word& k : times) scaleEntry(dict, k, h_, file);
+    requireKnown(dict, times, unchanged, file);
+    dictionary* functions = dict.findDict("functions");
+    if (functions)
+    {
+        for (entry& fo : *functions)
+        {
+            if (!fo.isDict()) continue;
+            dictionary& fd = fo.dict();
+            wordList scaled({"timeStart", "timeEnd", "probeLocations"});
+            wordList same;
+            (timeBased(fd, "writeControl") ? scaled : same).append("writeInterval");
+            (timeBased(fd, "executeControl") ? scaled : same).append("executeInterval");
+            for (const word& k : scaled)
+            {
+                scaleEntry(fd, k, h_, file/"functions"/fo.keyword());
+            }
+            requireKnown(fd, scaled, same, file/"functions"/fo.keyword());
+        }
+    }
+    write(file, dict);
+}
+
+
+void Foam::caseScaler::scaleTransport() const
+{
+    const fileName file(dir_/"constant"/"transportProperties");
+    if (!isFile(file)) return;
+    dictionary dict(read(file));
+    const dimensionedScalar nu("nu", dimViscosity, dict);
+    dict.set("nu", nu.value()*exactScaling::factor(dimViscosity, h_, "nu"));
+    requireKnown(dict, {"nu"}, {"rho"}, file);
+    write(file, dict);
+}
+
+
+void Foam::caseScaler::scaleCoupling() const
+{
+    const fileName file(dir_/"constant"/"couplingProperties");
+    if (!isFile(file)) return;
+    dictionary dict(read(file));
+    const wordList lengths({"keepDistance", "voxelSize", "bandwidth"});
+    const wordList unchanged
+    ({
+        "couplingInterval", "alphaMin", "voxelsPerSide", "voxelsPerDiameter",
+        "subGridResolution", "bandwidthOverCellSize", "cutoff", "coefficient",
+        "nSteps", "factor"
+    });
+    for (const word& k : lengths) scaleEntry(dict, k, h_, file);
+    requireKnown(dict, lengths, unchanged, file);
+    for (entry& e : dict)
+    {
+        if (!e.isDict() || e.keyword() == "FoamFile") continue;
+        for (const word& k : lengths) scaleEntry(e.dict(), k, h_, file/e.keyword());
+        requireKnown(e.dict(), lengths, unchanged, file/e.keyword());
+    }
+    write(file, dict);
+}
+
+
+void Foam::caseScaler::scaleMesh() const
+{
+    const fileName block(dir_/"system"/"blockMeshDict");
+    if (isFile(block))
+    {
+        dictionary dict(read(block));
+        const word key(dict.found("convertToMeters") ? "convertToMeters" : "scale");
+        dict.set(key, dict.getOrDefault<scalar>(key, 1)*h_);
+        write(block, dict);
+    }
+    if (isFile(dir_/"constant"/"polyMesh"/"points"))
+    {
+        Time runTime(Time::controlDictName, dir_.path(), dir_.name(), "system", "constant", false, false);
+        pointIOField points
+        (
+            IOobject("points", "constant", polyMesh::meshSubDir, runTime,
+                IOobject::MUST_READ, IOobject::NO_WRITE, false)
+        );
+        points *= h_;
+        points.writeObject(IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED, true);
+    }
+}
+
+
+void Foam::caseScaler::scaleDemParameters() const
+{
+    // variable NAME equal NUMBER  # ... [M L T ...]
+    const fileName file(dir_/"DEM"/"in.parameters");
+    if (!isFile(file)) return;
+    std::ifstream in(file);
+    std::ostringstream out;
+    const std::regex number
+        ("^(\\s*variable\\s+)(\\S+)(\\s+equal\\s+)([-+0-9.eE]+)(\\s*)(#.*)?$");
+    const std::regex dims("\\[([-0-9 ]+)\\]");
+    std::string line;
+    label lineNo = 0;
+    while (std::getline(in, line))
+    {
+        ++lineNo;
+        std::smatch m, d;
+        if (!std::regex_match(line, m, number))
+        {
+            out << line << '\n';
+            continue;
+        }
+        const std::string comment(m[6].matched ? m[6].str() : "");
+        if (!std::regex_search(comment, d, dims))
+        {
+            FatalErrorInFunction
+                << file << " line " << lineNo << ": " << word(m[2].str()) << " has no"
+                << " dimensions; declare them after a #, e.g. # [1 -1 -2] for a"
+                << " modulus, # [0 0 0] for a number" << exit(FatalError);
+        }
+        std::istringstream ds(d[1].str());
+        scalar e[7] = {0, 0, 0, 0, 0, 0, 0};
+        label n = 0;
+        while (n < 7 && ds >> e[n]) ++n;
+        if (n != 3 && n != 7)
+        {
+            FatalErrorInFunction
+                << file << " line " << lineNo << ": the dimensions of "
+                << word(m[2].str()) << " are [mass length time] or OpenFOAM's seven"
+                << exit(FatalError);
+        }
+        const dimensionSet ds7(e[0], e[1], e[2], e[3], e[4], e[5], e[6]);
+        const scalar v = std::stod(m[4].str())*exactScaling::factor(ds7, h_, m[2].str());
+        std::ostringstream num;
+        num.precision(15);
+        num << v;
+        out << m[1].str() << m[2].str() << m[3].str() << num.str() << m[5].str() << comment << '\n';
+    }
+    in.close();
+    std::ofstream(file) << out.str();
+}
+
+
+void Foam::caseScaler::scaleDemData(const fileName& file) const
+{
+    // atom_style granular: Atoms "id type diameter density x y z [ix iy iz]",
+    // Velocities "id vx vy vz wx wy wz"; the box and tilt lines are lengths
+    std::ifstream in(file);
+    std::ostringstream out;
+    out.precision(17);
+    std::string line, section;
+    label lineNo = 0;
+    auto fail = [&](const std::string& why)
+    {
+        FatalErrorInFunction
+            << file << " line " << lineNo << ": " << why << exit(FatalError);
+    };
+    while (std::getline(in, line))
+    {
+        ++lineNo;
+        std::istringstream is(line);
+        std::vector<std::string> words;
+        for (std::string w; is >> w;) words.push_back(w);
+        if (lineNo == 1 || words.empty())
+        {
+            out << line << '\n';
+            continue;
+        }
+        if (words.size() == 1 && std::isalpha(words[0][0]))
+        {
+            section = words[0];
+            if (section != "Atoms" && section != "Velocities")
+            {
+                fail("section " + section + ": scaleCase scales Atoms and Velocities");
+            }
+            out << line << '\n';
+            continue;
+        }
+        std::vector<scalar> f(words.size(), 1);
+        if (section.empty())
+        {
+            const std::string& last = words.back();
+            if (last == "xhi" || last == "yhi" || last == "zhi") f[0] = f[1] = h_;
+            else if (last == "yz") f[0] = f[1] = f[2] = h_;
+            else if (last != "atoms" && last != "types") fail("unknown header line");
+        }
+        else if (section == "Atoms")
+        {
+            if (words.size() != 7 && words.size() != 10)
+            {
+                fail("an atom of atom_style granular has 7 or 10 columns");
+            }
+            f[2] = f[4] = f[5] = f[6] = h_;
+        }
+        else
+        {
+            if (words.size() != 7) fail("a granular velocity has 7 columns");
+            f[4] = f[5] = f[6] = 1/h_;
+        }
+        for (size_t i = 0; i < words.size(); ++i)
+        {
+            if (i) out << ' ';
+            if (f[i] == 1) { out << words[i]; continue; }
+            size_t used = 0;
+            double v = 0;
+            try { v = std::stod(words[i], &used); } catch (...) {}
+            if (used != words[i].size()) fail("'" + words[i] + "' is not a number");
+            out << v*f[i];
+        }
+        out << '\n';
+    }
+    in.close();
+    std::ofstream(file) << out.str();
+}
+
+
+void Foam::caseScaler::scaleAll() const
+{
+    scaleMesh();
+    for (const word t : {"0", "0.orig"})
+    {
+        for (const fileName& f : readDir(dir_/t, fileName::FILE))
+        {
+            scaleField(dir_/t/f);
+        }
+    }
+    const fileName g(dir_/"constant"/"g");
+    if (isFile(g)) scaleField(g);
+    scaleControlDict();
+    scaleTransport();
+    scaleCoupling();
+    scaleDemParameters();
+    for (const fileName& f : readDir(dir_/"DEM", fileName::FILE))
+    {
+        if (f.hasExt("data")) scaleDemData(dir_/"DEM"/f);
+    }
+}

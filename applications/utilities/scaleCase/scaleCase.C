@@ -1,0 +1,104 @@
+/*---------------------------------------------------------------------------*\
+    voidFraction: unresolved CFD-DEM coupling for OpenFOAM and LIGGGHTS
+    Copyright (C) 2026 the voidFraction authors
+    License: GNU General Public License v3.0 or later (see LICENSE)
+    SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+/*---------------------------------------------------------------------------*\
+Application
+    scaleCase
+
+Description
+    Writes the exactly scaled copy of a coupled CFD-DEM case: lengths and
+    times by h, densities by 1, so that a quantity of dimensions M^a L^b T^c
+    scales by h^(3a+b+c) (Zhang, Huang and Zhao, "Comparison of coarse
+    graining DEM models based on exact scaling laws", CMES 2021, Table 1).
+    The scaled case, run, reproduces the original mapped back: positions
+    and times divided by h, velocities and pressures (kinematic) as they
+    are, forces divided by h^2.
+
+    Copied: everything but results (time directories other than 0,
+    processor*, postProcessing, VTK, DEM/post, log.*). Scaled: the mesh
+    (blockMeshDict's scale and constant/polyMesh/points), the fields of 0
+    and 0.orig by their dimensions, constant/g, constant/transportProperties,
+    controlDict's times and probe locations, the void fraction models'
+    lengths, and the DEM parameters of DEM/in.parameters:
+
+        variable dp     equal 0.001     # [0 1 0]    diameter
+        variable E      equal 5e6       # [1 -1 -2]  Young's modulus
+
+    The DEM scripts take every dimensional number from these variables.
+    Hertz contacts with an unchanged modulus are consistent under the
+    scaling as they stand; a Hooke stiffness is declared [1 0 -2] and
+    scales by h.
+
+Usage
+    scaleCase -factor 2 -output ../bed-h2
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "OSspecific.H"
+#include "caseScaler.H"
+
+using namespace Foam;
+
+namespace
+{
+    bool isResult(const fileName& name)
+    {
+        scalar t;
+        return (readScalar(name, t) && name != "0")
+            || name.startsWith("processor") || name.startsWith("log.")
+            || name == "postProcessing" || name == "VTK";
+    }
+}
+
+int main(int argc, char *argv[])
+{
+    argList::addNote("Writes the exactly scaled copy of a coupled case");
+    argList::noParallel();
+    argList::addOption("factor", "h", "length and time scale, > 0");
+    argList::addOption("output", "dir", "the scaled case, a new directory");
+    argList::addBoolOption("overwrite", "replace the output directory");
+    #include "setRootCase.H"
+
+    const scalar h = args.get<scalar>("factor");
+    if (!(h > 0))
+    {
+        FatalErrorInFunction << "-factor " << h << ": must be positive" << exit(FatalError);
+    }
+    const fileName source(args.path());
+    const fileName output(args.get<fileName>("output").expand());
+    const fileName outputAbs(output.isAbsolute() ? output : cwd()/output);
+    const fileName sourceAbs(source.isAbsolute() ? source : cwd()/source);
+    if (outputAbs.clean() == sourceAbs.clean())
+    {
+        FatalErrorInFunction
+            << "-output " << output << " is the case itself" << exit(FatalError);
+    }
+    if (exists(output))
+    {
+        if (!args.found("overwrite"))
+        {
+            FatalErrorInFunction
+                << output << " exists; choose another -output or add -overwrite"
+                << exit(FatalError);
+        }
+        rmDir(output);
+    }
+    mkDir(output);
+    for (const fileName::Type type : {fileName::FILE, fileName::DIRECTORY})
+    {
+        for (const fileName& name : readDir(source, type, false))
+        {
+            if (!isResult(name)) cp(source/name, outputAbs/name);
+        }
+    }
+    if (isDir(outputAbs/"DEM"/"post")) rmDir(outputAbs/"DEM"/"post");
+
+    caseScaler(outputAbs, h).scaleAll();
+    Info<< "scaleCase: " << source << " scaled by " << h << " into " << outputAbs
+        << nl << "End" << nl << endl;
+    return 0;
+}

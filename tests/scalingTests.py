@@ -16,7 +16,7 @@ import numpy as np
 import checks
 from checks import WORK, check, near
 from foamCase import ROOT, sh
-from couplingTests import edit
+from couplingTests import coupling_forces, edit
 
 TUTORIALS = os.path.join(ROOT, "tutorials")
 
@@ -121,6 +121,39 @@ def test_packed_bed():
               max(dt, dp) < 1e-6, "(time %.1e, pressure %.1e of the largest)" % (dt, dp))
 
 
+def test_fluidised_bed():
+    print("fluidisedBed scaled by 2 and 3 from the same packing: fluid force on the beads mapped back"
+          " over the first 0.02 s of scaled time (1e-6)")
+    case = tutorial("fluidisedBed", "scale-bed")
+    edit(os.path.join(case, "DEM", "in.packing"), r"^write_restart.*$", "write_data      packed.data")
+    edit(os.path.join(case, "DEM", "in.liggghts"), r"^read_restart.*$", "read_data       packed.data")
+    sh("mkdir -p DEM/post && cd DEM && liggghts -in in.packing -log post/log.packing -screen post/screen.packing",
+       case)
+    # coupling steps of 1e-4 s: 0.02 s of scaled time is 100 steps at h = 2, 67 at h = 3
+    steps = {1: 100, 2: 100, 3: 67}
+    forces = {}
+    for h in (1, 2, 3):
+        c = case if h == 1 else scaled(case, h)
+        # the tutorial's mesh at cells of 3 diameters, as ./Allrun analytical 3 makes it
+        sh("sed -e 's/NX/16/g; s/NY/2/g; s/NZP/2/g; s/NZ/40/g' system/blockMeshDict.template > system/blockMeshDict",
+           c)
+        edit(os.path.join(c, "system", "controlDict"), r"^endTime\s+\S+;", "endTime %.12g;" % (1e-4*h*steps[h]))
+        edit(os.path.join(c, "system", "controlDict"), r"^writePrecision\s+\S+;", "writePrecision 17;")
+        rc, out = sh("mkdir -p DEM/post && rm -rf 0 && cp -r 0.orig 0 && blockMesh > log.blockMesh && "
+                     "pimpleDEMFoam > log.pimpleDEMFoam 2>&1", c, check=False)
+        check("h = %d: run completed" % h, rc == 0)
+        forces[h] = np.array([f[2] for _, f in coupling_forces(os.path.join(c, "log.pimpleDEMFoam"))])
+    base = forces[1]
+    for h in (2, 3):
+        n = steps[h]
+        if len(forces[h]) != n or len(base) < n:
+            check("h = %d: %d couplings" % (h, n), False, "(%d, %d)" % (len(forces[h]), len(base)))
+            continue
+        diff = np.max(np.abs(forces[h]/h**2 - base[:n]))/np.max(np.abs(base[:n]))
+        check("h = %d: vertical fluid force on the beads / h^2 equals the original's, %d couplings (1e-6)" % (h, n),
+              diff < 1e-6, "(%.1e of the largest)" % diff)
+
+
 def test_bad_input():
     print("scaleCase: bad input stops with an error naming what is wrong")
     case = tutorial("settlingSphere", "scale-bad")
@@ -148,7 +181,8 @@ def test_bad_input():
 
 
 def main():
-    checks.run([test_written_values, test_settling_sphere, test_packed_bed, test_bad_input], sys.argv[1:])
+    checks.run([test_written_values, test_settling_sphere, test_packed_bed, test_fluidised_bed,
+                test_bad_input], sys.argv[1:])
     return checks.summary("scaling")
 
 

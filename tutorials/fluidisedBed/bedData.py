@@ -40,10 +40,11 @@ def snapshots(case):
 
 def bed_weight(case):
     """from the particle count the solver reports at start and the beads'
-    radius (in.packing: 0.5 mm)"""
+    (or parcels') radius in the case's DEM parameters"""
     text = open(os.path.join(case, "log.pimpleDEMFoam")).read()
     n = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", text).group(1))
-    return n*4/3*np.pi*0.0005**3*(RHO_P - RHO_F)*G/AREA
+    r = caseProperties.particle_diameter(case)/2
+    return n*4/3*np.pi*r**3*(RHO_P - RHO_F)*G/AREA
 
 
 def pressure_drop(case):

@@ -234,13 +234,32 @@ void Foam::caseScaler::scaleCoupling() const
 
 void Foam::caseScaler::scaleMesh() const
 {
-    const fileName block(dir_/"system"/"blockMeshDict");
-    if (isFile(block))
+    // a blockMeshDict, or the template a tutorial's Allrun fills in: only
+    // the scale changes, the file keeps its layout and comments
+    const std::regex scaleLine("(^|\n)(\\s*(scale|convertToMeters)\\s+)([-+0-9.eE]+)(\\s*;)");
+    for (const word name : {"blockMeshDict", "blockMeshDict.template"})
     {
-        dictionary dict(read(block));
-        const word key(dict.found("convertToMeters") ? "convertToMeters" : "scale");
-        dict.set(key, dict.getOrDefault<scalar>(key, 1)*h_);
-        write(block, dict);
+        const fileName block(dir_/"system"/name);
+        if (!isFile(block)) continue;
+        std::ifstream in(block);
+        std::stringstream buffer;
+        buffer << in.rdbuf();
+        in.close();
+        std::string text(buffer.str());
+        std::smatch m;
+        std::ostringstream num;
+        num.precision(15);
+        if (std::regex_search(text, m, scaleLine))
+        {
+            num << std::stod(m[4].str())*h_;
+            text = m.prefix().str() + m[1].str() + m[2].str() + num.str() + m[5].str() + m.suffix().str();
+        }
+        else
+        {
+            num << h_;
+            text += "\nscale " + num.str() + ";   // scaleCase\n";
+        }
+        std::ofstream(block) << text;
     }
     if (isFile(dir_/"constant"/"polyMesh"/"points"))
     {

@@ -340,6 +340,16 @@ def test_dump_series():
         check("%s: progress per snapshot" % label, out.count("Snapshot ") == len(times))
     rc, out = sh("demVoidFraction -dump all.dump -time 50", case, check=False)
     check("-time selecting nothing: error", rc != 0 and "none of the 3 snapshots" in out)
+    # on 2 ranks, each keeping the particles near its cells (one distributor
+    # for the whole series)
+    sh("rm -rf 0 0.00* 100 200 processor*", case)
+    rc, out = sh("decomposePar -force > log.decomposePar && mpirun -np 2 demVoidFraction -parallel -distribute "
+                 "-dump all.dump -deltaT 1e-5 && reconstructPar -withZero > log.reconstructPar", case, check=False)
+    got = fields(("0", "0.001", "0.002"))
+    close = rc == 0 and all(g is not None and max(abs(x - y) for x, y in zip(g, w)) < 1e-12
+                            for g, w in zip(got, want))
+    check("2 ranks, -distribute, every snapshot: each time = that snapshot mapped alone in serial (1e-12)",
+          close, out[-400:] if rc else "")
 
 
 def test_keep_weights():

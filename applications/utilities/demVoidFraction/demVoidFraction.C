@@ -210,6 +210,9 @@ int main(int argc, char *argv[])
     // a dump is read whole on every rank; with -distribute each rank keeps
     // the particles near its cells, as from a DEM
     const bool distribute = args.found("distribute") && Pstream::parRun();
+    // built once (its ranks' boxes and bins are collective work), used for
+    // every snapshot
+    autoPtr<particleDistributor> distributor;
     auto hold = [&](particleData&& all, particleData& particles)
     {
         if (!distribute)
@@ -222,7 +225,8 @@ int main(int argc, char *argv[])
         {
             mine.append(i);
         }
-        particleHolders holders(particleDistributor(model()).distribute(all.reordered(mine), particles));
+        if (!distributor.valid()) distributor.reset(new particleDistributor(model()));
+        particleHolders holders(distributor->distribute(all.reordered(mine), particles));
         Info<< "Particles held: at most "
             << returnReduce(particles.size(), maxOp<label>()) << " of " << all.size()
             << " on a rank" << endl;

@@ -396,6 +396,35 @@ def test_parcels():
     _, exact = run("parcel-exact", 2e-3, "factor 2; forceScaling exact;")
     near("exact: parcel terminal velocity / h^2 Schiller-Naumann against h^3 weight", exact/brentq(excess, 1e-5, 5.0),
          1.0, 0.02)
+    # the cubic parcel on 2 ranks, the mesh split across its path
+    par = os.path.join(WORK, "parcel-parallel")
+    shutil.rmtree(par, ignore_errors=True)
+    shutil.copytree(case, par)
+    sh("rm -rf 0.[0-9]* [1-9]* DEM/post/* && mkdir -p DEM/post", par)
+    edit(os.path.join(par, "system", "fvSolution"), r"tolerance 1e-10; relTol [0-9.]+;", "tolerance 1e-13; relTol 0;")
+    edit(os.path.join(par, "system", "controlDict"), r"^endTime\s+\S+;", "endTime 0.1;")
+    with open(os.path.join(par, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
+    sh("pimpleDEMFoam > log.serial 2>&1", par)
+    serial = history(par)
+    sh("rm -rf DEM/post/* 0.[0-9]*", par)
+    rc, out = sh("decomposePar -force > log.decomposePar && "
+                 "timeout 300 mpirun -np 2 pimpleDEMFoam -parallel > log.parallel 2>&1", par, check=False)
+    diff = (np.max(np.abs(history(par)[:, 2] - serial[:, 2]))/np.max(np.abs(serial[:, 2]))
+            if rc == 0 else float("nan"))
+    check("cubic parcel on 2 ranks: velocity history equal to serial (1e-10)", diff < 1e-10, "(%.1e)" % diff)
+
+    # centroid with parcels wider than a cell: said once
+    case = copy_tutorial("settlingSphere", "parcel-centroid")
+    set_dem(case, diameter=0.01)
+    edit(os.path.join(case, "constant", "couplingProperties"), r"^voidFractionModel\s+\w+;", "voidFractionModel centroid;")
+    edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+0.4;", "endTime 0.005;")
+    with open(os.path.join(case, "constant", "couplingProperties"), "a") as f:
+        f.write("coarseGraining { factor 2; }\n")
+    rc, out = sh("cp -r 0.orig 0 && blockMesh > log.blockMesh && pimpleDEMFoam", case, check=False)
+    check("centroid with 10 mm parcels on 8 mm cells: warned once", rc == 0 and out.count("centroid puts each") == 1,
+          out[-400:] if rc else "")
     case = copy_tutorial("settlingSphere", "parcel-bad")
     sh("cp -r 0.orig 0 && blockMesh", case)
     for body, needle in (("factor 0.5;", "is below 1"), ("factor (2 3);", "one number"),

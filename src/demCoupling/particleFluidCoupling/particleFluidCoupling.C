@@ -167,6 +167,16 @@ Foam::particleFluidCoupling::particleFluidCoupling
         Info<< "particleFluidCoupling: coarse-grained parcels, factor "
             << parcels_.factor() << ", forces scaled "
             << parcelScaling::lawNames[parcels_.forceScaling()] << endl;
+        // centroid puts a parcel's whole volume into one cell
+        const scalar widest = 2*gMax(particles_.radii());
+        const scalar narrowest = gMin(cbrt(mesh.V().field()));
+        if (voidFraction_->type() == "centroid" && widest > narrowest)
+        {
+            WarningInFunction
+                << "parcels up to " << widest << " m wide on cells from "
+                << narrowest << " m: centroid puts each parcel's volume into"
+                << " one cell; analytical, kernel or diffusion spread it" << endl;
+        }
     }
     Info<< "particleFluidCoupling: formulation " << form << ", "
         << voidFraction_->stats().nParticles << " particles" << endl;

@@ -154,6 +154,49 @@ def test_fluidised_bed():
               diff < 1e-6, "(%.1e of the largest)" % diff)
 
 
+def test_parcel_parameters():
+    print("scaleCase -parcels: the DEM parameters of parcels of h^3 beads, and a short coupled run")
+    case = tutorial("fluidisedBed", "parcels-source")
+    expect = {  # (h, law): radius, count, skin, modulus, density, DEM step (worked by hand)
+        (2, "cubic"): (1e-3, 1250, 6e-4, 5e6, 2500, 2e-5),    # h^1.5 = 2.83: 2 fluid sub-steps
+        (3, "cubic"): (1.5e-3, 370, 9e-4, 5e6, 2500, 5e-5),   # 10000/27 = 370.4; h^1.5 = 5.2
+        (3, "exact"): (1.5e-3, 370, 9e-4, 5e6, 2500, 3e-5),
+    }
+    for (h, law), want in expect.items():
+        out = "%s-parcels-h%d-%s" % (case, h, law)
+        rc, text = sh("scaleCase -factor %d -parcels %s -output %s -overwrite" % (h, law, out), case, check=False)
+        check("h = %d, %s: scaleCase ran" % (h, law), rc == 0, text[-500:] if rc else "")
+        if rc:
+            continue
+        dem = open(os.path.join(out, "DEM", "in.parameters")).read()
+        got = tuple(float(re.search(r"(?m)^variable\s+%s\s+equal\s+(\S+)" % n, dem).group(1))
+                    for n in ("radius", "count", "skin", "youngs", "density", "demStep"))
+        unchanged = all(float(re.search(r"(?m)^variable\s+%s\s+equal\s+(\S+)" % n, dem).group(1)) == v
+                        for n, v in (("width", 0.048), ("top", 0.12), ("gravity", 9.81)))
+        check("h = %d, %s: radius, count, skin, modulus, density, DEM step %s" % (h, law, want),
+              all(abs(g - w) <= 1e-12*abs(w) for g, w in zip(got, want)), "(got %s)" % (got,))
+        check("h = %d, %s: the box and gravity unchanged" % (h, law), unchanged)
+        props = open(os.path.join(out, "constant", "couplingProperties")).read()
+        check("h = %d, %s: coarseGraining added" % (h, law),
+              re.search(r"coarseGraining \{ factor %d; forceScaling %s; \}" % (h, law), props) is not None)
+        check("h = %d, %s: the fluid as it is" % (h, law),
+              open(os.path.join(out, "constant", "g")).read() == open(os.path.join(case, "constant", "g")).read())
+    # the h = 2 parcels packed and coupled for 0.02 s
+    out = "%s-parcels-h2-cubic" % case
+    sh("sed -e 's/NX/16/g; s/NY/2/g; s/NZP/2/g; s/NZ/40/g' system/blockMeshDict.template > system/blockMeshDict", out)
+    edit(os.path.join(out, "system", "controlDict"), r"^endTime\s+\S+;", "endTime 0.02;")
+    rc, text = sh("mkdir -p DEM/post && (cd DEM && liggghts -in in.packing -log post/log.packing "
+                  "-screen post/screen.packing) && cp -r 0.orig 0 && blockMesh > log.blockMesh && "
+                  "pimpleDEMFoam > log.pimpleDEMFoam 2>&1", out, check=False)
+    log = open(os.path.join(out, "log.pimpleDEMFoam")).read() if os.path.isfile(os.path.join(out, "log.pimpleDEMFoam")) else ""
+    check("h = 2 parcels: 1250 packed and coupled 0.02 s, 2 fluid steps per coupling",
+          rc == 0 and "1250 particles" in log and "10 DEM steps and 2 fluid steps per coupling" in log, text[-400:] if rc else "")
+    rc, text = sh("scaleCase -factor 2 -parcels cubic -output %s-again -overwrite" % case, out, check=False)
+    check("a case that already has coarseGraining: refused", rc != 0 and "already has coarseGraining" in text)
+    rc, text = sh("scaleCase -factor 0.5 -parcels cubic -output %s-half -overwrite" % case, case, check=False)
+    check("-parcels with h < 1: refused", rc != 0 and "h^3 >= 1" in text)
+
+
 def test_bad_input():
     print("scaleCase: bad input stops with an error naming what is wrong")
     case = tutorial("settlingSphere", "scale-bad")
@@ -182,7 +225,7 @@ def test_bad_input():
 
 def main():
     checks.run([test_written_values, test_settling_sphere, test_packed_bed, test_fluidised_bed,
-                test_bad_input], sys.argv[1:])
+                test_parcel_parameters, test_bad_input], sys.argv[1:])
     return checks.summary("scaling")
 
 

@@ -16,8 +16,10 @@
 #include "pointIOField.H"
 #include "polyMesh.H"
 #include "stringOps.H"
+#include "dimensionSets.H"
 #include <cctype>
 #include <fstream>
+#include <functional>
 #include <vector>
 #include <regex>
 #include <sstream>
@@ -275,9 +277,12 @@ void Foam::caseScaler::scaleMesh() const
 }
 
 
-void Foam::caseScaler::scaleDemParameters() const
+void Foam::caseScaler::rewriteDemParameters
+(
+    const std::function<scalar(const demParameter&)>& newValue
+) const
 {
-    // variable NAME equal NUMBER  # ... [M L T ...]
+    // variable NAME equal NUMBER  # ... [M L T] ... {role}
     const fileName file(dir_/"DEM"/"in.parameters");
     if (!isFile(file)) return;
     std::ifstream in(file);
@@ -285,6 +290,7 @@ void Foam::caseScaler::scaleDemParameters() const
     const std::regex number
         ("^(\\s*variable\\s+)(\\S+)(\\s+equal\\s+)([-+0-9.eE]+)(\\s*)(#.*)?$");
     const std::regex dims("\\[([-0-9 ]+)\\]");
+    const std::regex role("\\{(\\w+)\\}");
     std::string line;
     label lineNo = 0;
     while (std::getline(in, line))
@@ -315,15 +321,34 @@ void Foam::caseScaler::scaleDemParameters() const
                 << word(m[2].str()) << " are [mass length time] or OpenFOAM's seven"
                 << exit(FatalError);
         }
-        const dimensionSet ds7(e[0], e[1], e[2], e[3], e[4], e[5], e[6]);
-        const scalar v = std::stod(m[4].str())*exactScaling::factor(ds7, h_, m[2].str());
+        demParameter p
+        {
+            word(m[2].str()), std::stod(m[4].str()),
+            dimensionSet(e[0], e[1], e[2], e[3], e[4], e[5], e[6]), wordList()
+        };
+        for (std::sregex_iterator r(comment.begin(), comment.end(), role), end; r != end; ++r)
+        {
+            p.roles.append(word((*r)[1].str()));
+        }
         std::ostringstream num;
         num.precision(15);
-        num << v;
+        num << newValue(p);
         out << m[1].str() << m[2].str() << m[3].str() << num.str() << m[5].str() << comment << '\n';
     }
     in.close();
     std::ofstream(file) << out.str();
+}
+
+
+void Foam::caseScaler::scaleDemParameters() const
+{
+    rewriteDemParameters
+    (
+        [this](const demParameter& p)
+        {
+            return p.value*exactScaling::factor(p.dims, h_, p.name);
+        }
+    );
 }
 
 
@@ -397,6 +422,68 @@ void Foam::caseScaler::scaleDemData(const fileName& file) const
     }
     in.close();
     std::ofstream(file) << out.str();
+}
+
+
+void Foam::caseScaler::makeParcels(const word& law) const
+{
+    const bool exact = (law == "exact");
+    if (!exact && law != "cubic")
+    {
+        FatalErrorInFunction
+            << "-parcels " << law << ": cubic or exact" << exit(FatalError);
+    }
+    const fileName coupling(dir_/"constant"/"couplingProperties");
+    const dictionary couplingDict(read(coupling));
+    if (couplingDict.found("coarseGraining"))
+    {
+        FatalErrorInFunction
+            << coupling << " already has coarseGraining" << exit(FatalError);
+    }
+    const scalar interval = couplingDict.get<label>("couplingInterval");
+    const scalar deltaT = read(dir_/"system"/"controlDict").get<scalar>("deltaT");
+    std::ofstream(coupling, std::ios::app)
+        << "\ncoarseGraining { factor " << h_ << "; forceScaling " << law
+        << "; }   // scaleCase -parcels\n";
+
+    // the DEM step the law allows, lowered so that the coupling time stays a
+    // whole multiple or fraction of the fluid step
+    auto commensurate = [&](const scalar allowed)
+    {
+        const scalar one = deltaT/interval;
+        return allowed >= one
+            ? std::floor(allowed/one + 1e-9)*one
+            : one/std::ceil(one/allowed - 1e-9);
+    };
+    Info<< "DEM parameters for parcels of " << h_ << "^3 particles (" << law << "):" << nl;
+    rewriteDemParameters
+    (
+        [&](const demParameter& p)
+        {
+            scalar v = p.value;
+            if (p.roles.found("count"))
+            {
+                v = max(std::round(p.value/(h_*h_*h_)), scalar(1));
+            }
+            else if (p.roles.found("timestep"))
+            {
+                // exact: h; the coarse grain model, contacts unscaled:
+                // h^3/2 (Zhang, Huang and Zhao 2021, Eq. 17)
+                v = commensurate(p.value*(exact ? h_ : std::pow(h_, 1.5)));
+            }
+            else if (p.roles.found("particle"))
+            {
+                // exact: by its dimensions; the coarse grain model keeps
+                // the particles' properties and scales their size
+                v = exact
+                    ? p.value*exactScaling::factor(p.dims, h_, p.name)
+                    : (p.dims == dimLength ? p.value*h_ : p.value);
+            }
+            Info<< "    " << p.name << ": " << p.value << " -> " << v << nl;
+            return v;
+        }
+    );
+    Info<< endl;
 }
 
 

@@ -32,8 +32,15 @@ Description
     scaling as they stand; a Hooke stiffness is declared [1 0 -2] and
     scales by h.
 
+    With -parcels cubic|exact it writes instead the same case with the
+    DEM's spheres made parcels of h^3 particles: the fluid as it is, a
+    coarseGraining dictionary in couplingProperties, and the DEM parameters
+    marked {particle}, {count} or {timestep} in DEM/in.parameters scaled by
+    the law (see caseScaler), the table printed.
+
 Usage
     scaleCase -factor 2 -output ../bed-h2
+    scaleCase -factor 2 -parcels cubic -output ../bed-parcels
 
 \*---------------------------------------------------------------------------*/
 
@@ -61,6 +68,12 @@ int main(int argc, char *argv[])
     argList::addOption("factor", "h", "length and time scale, > 0");
     argList::addOption("output", "dir", "the scaled case, a new directory");
     argList::addBoolOption("overwrite", "replace the output directory");
+    argList::addOption
+    (
+        "parcels", "law",
+        "instead: the same case with the DEM's spheres parcels of h^3"
+        " particles, forces scaled cubic or exact"
+    );
     #include "setRootCase.H"
 
     const scalar h = args.get<scalar>("factor");
@@ -92,12 +105,30 @@ int main(int argc, char *argv[])
     {
         for (const fileName& name : readDir(source, type, false))
         {
-            if (!isResult(name)) cp(source/name, outputAbs/name);
+            // (the output may lie inside the case)
+            const fileName entry(sourceAbs/name);
+            if (!isResult(name) && entry.clean() != outputAbs.clean())
+            {
+                cp(source/name, outputAbs/name);
+            }
         }
     }
     if (isDir(outputAbs/"DEM"/"post")) rmDir(outputAbs/"DEM"/"post");
 
-    caseScaler(outputAbs, h).scaleAll();
+    if (args.found("parcels"))
+    {
+        if (!(h >= 1))
+        {
+            FatalErrorInFunction
+                << "-factor " << h << ": a parcel stands for h^3 >= 1 particles"
+                << exit(FatalError);
+        }
+        caseScaler(outputAbs, h).makeParcels(args.get<word>("parcels"));
+    }
+    else
+    {
+        caseScaler(outputAbs, h).scaleAll();
+    }
     Info<< "scaleCase: " << source << " scaled by " << h << " into " << outputAbs
         << nl << "End" << nl << endl;
     return 0;

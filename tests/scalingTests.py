@@ -15,19 +15,8 @@ import numpy as np
 
 import checks
 from checks import WORK, check, near
-from foamCase import ROOT, sh
-from couplingTests import coupling_forces, edit
-
-TUTORIALS = os.path.join(ROOT, "tutorials")
-
-
-def tutorial(name, dest):
-    path = os.path.join(WORK, dest)
-    shutil.rmtree(path, ignore_errors=True)
-    shutil.copytree(os.path.join(TUTORIALS, name), path)
-    sh("./Allclean", path)
-    return path
-
+from foamCase import sh
+from couplingTests import copy_tutorial as tutorial, coupling_forces, edit
 
 def scaled(case, h):
     out = "%s-h%g" % (case, h)

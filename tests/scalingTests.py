@@ -206,8 +206,12 @@ def test_bad_input():
         edit(os.path.join(c, rel), pattern, replacement)
         rc, out = sh("scaleCase -factor 2 -output %s-h2 -overwrite" % c, c, check=False)
         check("%s: error says '%s'" % (name, needle), rc != 0 and needle in out, "" if needle in out else out[-500:])
-    rc, out = sh("scaleCase -factor 2 -output %s" % case, case, check=False)
+    os.makedirs(case + "-exists", exist_ok=True)
+    rc, out = sh("scaleCase -factor 2 -output %s-exists" % case, case, check=False)
     check("existing output directory: refused", rc != 0 and "-overwrite" in out, out[-300:] if rc == 0 else "")
+    rc, out = sh("scaleCase -factor 2 -overwrite -output .", case, check=False)
+    check("the case itself as output: refused", rc != 0 and "is the case itself" in out and
+          os.path.isdir(os.path.join(case, "system")), out[-300:] if rc == 0 else "")
     rc, out = sh("scaleCase -factor -1 -output %s-neg" % case, case, check=False)
     check("negative factor: refused", rc != 0 and "must be positive" in out, out[-300:] if rc == 0 else "")
 

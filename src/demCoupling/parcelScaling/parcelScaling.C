@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "parcelScaling.H"
+#include "readChoice.H"
 
 const Foam::Enum<Foam::parcelScaling::law> Foam::parcelScaling::lawNames
 ({
@@ -42,5 +43,5 @@ Foam::parcelScaling::parcelScaling(const dictionary& couplingDict)
             << "coarseGraining factor " << h_ << " is below 1: a parcel stands"
             << " for h^3 >= 1 particles" << exit(FatalIOError);
     }
-    law_ = lawNames.getOrDefault("forceScaling", dict, law::cubic);
+    law_ = readChoice(dict, "forceScaling", lawNames, law::cubic);
 }

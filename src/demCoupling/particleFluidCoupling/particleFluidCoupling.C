@@ -5,6 +5,7 @@
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
 #include "particleFluidCoupling.H"
+#include "readChoice.H"
 #include "fvc.H"
 #include "OFstream.H"
 #include "zeroGradientFvPatchFields.H"
@@ -49,6 +50,22 @@ namespace
         return rho;
     }
 }
+
+
+const Foam::Enum<Foam::particleFluidCoupling::formulation>
+Foam::particleFluidCoupling::formulationNames
+({
+    { formulation::A, "A" },
+    { formulation::B, "B" },
+});
+
+
+const Foam::Enum<Foam::particleFluidCoupling::outsideAction>
+Foam::particleFluidCoupling::outsideActionNames
+({
+    { outsideAction::error, "error" },
+    { outsideAction::remove, "remove" },
+});
 
 
 Foam::particleFluidCoupling::particleFluidCoupling
@@ -114,17 +131,7 @@ Foam::particleFluidCoupling::particleFluidCoupling
     totalForce_(Zero),
     mostHeld_(0)
 {
-    const word form(dict_.getOrDefault<word>("formulation", "A"));
-    if (form == "B")
-    {
-        formulation_ = formulation::B;
-    }
-    else if (form != "A")
-    {
-        FatalIOErrorInFunction(dict_)
-            << "formulation " << form << " is not A (set I) or B (set II)"
-            << exit(FatalIOError);
-    }
+    formulation_ = readChoice(dict_, "formulation", formulationNames, formulation::A);
     for (const word& f : dict_.getOrDefault<wordList>("forces", wordList()))
     {
         if (f == "pressureGradient") pressureGradientForce_ = true;
@@ -142,14 +149,9 @@ Foam::particleFluidCoupling::particleFluidCoupling
             << "formulation B puts the pressure gradient into drag/alpha:"
             << " remove pressureGradient from forces" << exit(FatalIOError);
     }
-    const word outside(dict_.getOrDefault<word>("particlesOutside", "error"));
-    if (outside == "remove") removeOutside_ = true;
-    else if (outside != "error")
-    {
-        FatalIOErrorInFunction(dict_)
-            << "particlesOutside " << outside << " is not error or remove"
-            << exit(FatalIOError);
-    }
+    removeOutside_ =
+        readChoice(dict_, "particlesOutside", outsideActionNames, outsideAction::error)
+     == outsideAction::remove;
 
     // bad names fail before the DEM starts
     drag_ = dragModel::New(dict_);
@@ -178,7 +180,7 @@ Foam::particleFluidCoupling::particleFluidCoupling
                 << " one cell; analytical, kernel or diffusion spread it" << endl;
         }
     }
-    Info<< "particleFluidCoupling: formulation " << form << ", "
+    Info<< "particleFluidCoupling: formulation " << formulationNames[formulation_] << ", "
         << voidFraction_->stats().nParticles << " particles" << endl;
 }
 

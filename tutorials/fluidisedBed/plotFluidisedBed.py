@@ -33,7 +33,11 @@ ax.set_xlabel("t [s]")
 ax.set_ylabel("pressure drop [Pa]")
 ax.set_ylim(0, 2*weight)
 ax.legend(fontsize=7)
-ax.set_title(f"{model}: 10,000 beads in air", fontsize=9)
+couplingText = open("constant/couplingProperties").read()
+n = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", open("log.pimpleDEMFoam").read()).group(1))
+parcels = re.search(r"coarseGraining\s*\{\s*factor\s+([0-9.]+);", couplingText)
+what = f"{n:,} parcels (h = {parcels.group(1)})" if parcels else f"{n:,} beads"
+ax.set_title(f"{model}: {what} in air", fontsize=9)
 for k, path in enumerate(files):
     x, r, v = read_vtk(path)
     a = fig.add_subplot(1, len(files) + 2, k + 3)

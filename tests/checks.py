@@ -2,6 +2,7 @@
 """Assertion counters and the checks the model test files share."""
 import math
 import os
+import time
 
 from foamCase import ROOT, cell_volumes, read_scalar_field, sh, sphere_volume, write_dump
 
@@ -96,10 +97,12 @@ def run(tests, only):
     for t in tests:
         if only and t.__name__ not in only:
             continue
+        start = time.time()
         try:
             t()
         except Exception as e:
             check(t.__name__ + " completed", False, str(e)[-2000:])
+        print("  (%s: %.0f s)" % (t.__name__, time.time() - start))
 
 
 def summary(name):

@@ -186,6 +186,34 @@ def test_parcel_parameters():
     check("-parcels with h < 1: refused", rc != 0 and "h^3 >= 1" in text)
 
 
+def test_compression_precision():
+    print("coarse-grained DEM alone: biaxial compression of disks at h = 1, 2, 4 (2 samples, "
+          "half the paper's sample), the force/strain gradient against h G_1")
+    study = os.path.join(checks.ROOT, "benchmarks", "coarseGrainingPrecision")
+    sys.path.insert(0, study)
+    import compression
+    results = os.path.join(WORK, "compression")
+    shutil.rmtree(results, ignore_errors=True)
+    rc, out = sh("/usr/bin/python3 %s/compression.py --dim 2 --factors 1,2,4 --samples 2 --size 0.5 "
+                 "--results %s --work %s/runs" % (study, results, results), study, check=False)
+    check("compression.py ran", rc == 0, out[-800:] if rc else "")
+    rows = compression.load_results(os.path.join(results, "compression2d_size0.5.csv"))
+    check("6 samples written", len(rows) == 6, "(got %d)" % len(rows))
+    if len(rows) != 6:
+        return
+    counts = {r["h"]: int(r["particles"]) for r in rows}
+    check("particle counts 20371 s^2 / h^2: 5092, 1273, 318", counts == {1.0: 5092, 2.0: 1273, 4.0: 318},
+          "(got %s)" % counts)
+    check("consolidated dense (porosity 0.12 .. 0.2) and the lateral stress within 15 % of p0",
+          all(0.12 < r["porosity"] < 0.2 and r["lateral_error"] < 0.15 for r in rows),
+          str([(r["porosity"], r["lateral_error"]) for r in rows]))
+    for t in compression.summary(rows, 2)[1:]:
+        check("h = %g: gradient within 10 %% of h G_1 (err %.2f %%)" % (t["h"], 100 * t["err"]),
+              t["err"] < 0.10)
+    rc, out = sh("/usr/bin/python3 %s/compression.py --factors 0.5" % study, study, check=False)
+    check("a factor below 1: refused", rc != 0 and "factors must be >= 1" in out, out[-300:])
+
+
 def test_bad_input():
     print("scaleCase: bad input stops with an error naming what is wrong")
     case = tutorial("settlingSphere", "scale-bad")
@@ -218,7 +246,7 @@ def test_bad_input():
 
 def main():
     checks.run([test_written_values, test_settling_sphere, test_packed_bed, test_fluidised_bed,
-                test_parcel_parameters, test_bad_input], sys.argv[1:])
+                test_parcel_parameters, test_compression_precision, test_bad_input], sys.argv[1:])
     return checks.summary("scaling")
 
 

@@ -188,21 +188,21 @@ def test_parcel_parameters():
 
 def test_compression_precision():
     print("coarse-grained DEM alone: biaxial compression of disks at h = 1, 2, 4 (2 samples, "
-          "half the paper's sample), the force/strain gradient against h G_1")
+          "0.7 times the paper's sides), the force/strain gradient against h G_1")
     study = os.path.join(checks.ROOT, "benchmarks", "coarseGrainingPrecision")
     sys.path.insert(0, study)
     import compression
     results = os.path.join(WORK, "compression")
     shutil.rmtree(results, ignore_errors=True)
-    rc, out = sh("/usr/bin/python3 %s/compression.py --dim 2 --factors 1,2,4 --samples 2 --size 0.5 "
+    rc, out = sh("/usr/bin/python3 %s/compression.py --dim 2 --factors 1,2,4 --samples 2 --size 0.7 "
                  "--results %s --work %s/runs" % (study, results, results), study, check=False)
     check("compression.py ran", rc == 0, out[-800:] if rc else "")
-    rows = compression.load_results(os.path.join(results, "compression2d_size0.5.csv"))
+    rows = compression.load_results(os.path.join(results, "compression2d_size0.7.csv"))
     check("6 samples written", len(rows) == 6, "(got %d)" % len(rows))
     if len(rows) != 6:
         return
     counts = {r["h"]: int(r["particles"]) for r in rows}
-    check("particle counts 20371 s^2 / h^2: 5092, 1273, 318", counts == {1.0: 5092, 2.0: 1273, 4.0: 318},
+    check("particle counts 20371 s^2 / h^2: 9981, 2495, 623", counts == {1.0: 9981, 2.0: 2495, 4.0: 623},
           "(got %s)" % counts)
     check("consolidated dense (porosity 0.12 .. 0.2) and the lateral stress within 15 % of p0",
           all(0.12 < r["porosity"] < 0.2 and r["lateral_error"] < 0.15 for r in rows),

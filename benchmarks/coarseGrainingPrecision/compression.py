@@ -298,7 +298,8 @@ def summary(rows, dim, key="gradient"):
                           porosity=statistics.fmean(r["porosity"] for r in by_h[h]),
                           mean=statistics.fmean(g), theory=theory,
                           err=abs(theory - statistics.fmean(g)) / theory,
-                          var=statistics.pvariance(dev) if len(g) > 1 else 0.0))
+                          var=statistics.pvariance(dev) if len(g) > 1 else 0.0,
+                          sem=statistics.stdev(g) / math.sqrt(len(g)) / theory if len(g) > 1 else 0.0))
     return table
 
 
@@ -306,14 +307,14 @@ def print_summary(rows, dim):
     table = summary(rows, dim)
     initial = {t["h"]: t for t in summary(rows, dim, "initial")}
     print("| h | particles | samples | porosity | mean G (N%s) | h^%d G_1 | err (Eq. 36) "
-          "| variance | err of G_0 |%s"
+          "| standard error | variance | err of G_0 |%s"
           % ("/m" if dim == 2 else "", dim - 1, " paper (Table 3) |" if dim == 2 else ""))
-    print("|---" * (10 if dim == 2 else 9) + "|")
+    print("|---" * (11 if dim == 2 else 10) + "|")
     for t in table:
         paper = paper_error(t["h"])
-        print("| %g | %d | %d | %.3f | %.4e | %.4e | %.2f %% | %.2e | %.2f %% |%s"
+        print("| %g | %d | %d | %.3f | %.4e | %.4e | %.2f %% | %.2f %% | %.2e | %.2f %% |%s"
               % (t["h"], t["particles"], t["samples"], t["porosity"], t["mean"], t["theory"],
-                 100 * t["err"], t["var"], 100 * initial[t["h"]]["err"],
+                 100 * t["err"], 100 * t["sem"], t["var"], 100 * initial[t["h"]]["err"],
                  (" %.2f %% |" % (100 * paper) if paper is not None else " |") if dim == 2 else ""))
     return table
 
@@ -325,13 +326,14 @@ def plot(table, dim, path):
     rows = [t for t in table if t["h"] != 1.0]
     h = [t["h"] for t in rows]
     fig, ax = plt.subplots(1, 2, figsize=(9, 3.5))
-    ax[0].plot(h, [100 * t["err"] for t in rows], "o-", label="LIGGGHTS, periodic sample")
+    ax[0].errorbar(h, [100 * t["err"] for t in rows], yerr=[100 * t["sem"] for t in rows], fmt="o-",
+                   capsize=3, label="LIGGGHTS, periodic sample (bars: standard error of the mean)")
     if dim == 2:
         ph = sorted(PAPER_TABLE3)
         ax[0].plot(ph, [100 * paper_error(x) for x in ph], "s--", label="Zhang et al., Table 3")
     ax[0].set_xlabel("scale factor h")
     ax[0].set_ylabel("relative error of G (%)")
-    ax[0].legend()
+    ax[0].legend(fontsize=7)
     ax[1].plot(h, [t["var"] for t in rows], "o-")
     ax[1].set_xlabel("scale factor h")
     ax[1].set_ylabel("variance of the relative deviation")

@@ -36,6 +36,7 @@ usage: compression.py [--dim 2|3] [--factors 1,2,4] [--samples N] [--size s]
 """
 import argparse
 import csv
+import itertools
 import math
 import os
 import random
@@ -125,7 +126,7 @@ def overlaps(p, r, key, reach, ncell, box, grid, centres, radii):
     dim = len(box)
     ranges = [range(key[a] - reach[a], key[a] + reach[a] + 1) for a in range(dim)]
     seen = set()
-    for idx in _product(ranges):
+    for idx in itertools.product(*ranges):
         k = tuple(idx[a] % ncell[a] for a in range(dim))
         if k in seen:
             continue
@@ -139,15 +140,6 @@ def overlaps(p, r, key, reach, ncell, box, grid, centres, radii):
             if d2 < (r + radii[j]) ** 2:
                 return True
     return False
-
-
-def _product(ranges):
-    if not ranges:
-        yield ()
-        return
-    for head in ranges[0]:
-        for tail in _product(ranges[1:]):
-            yield (head,) + tail
 
 
 def write_data(path, radii, centres, loose, dim):

@@ -32,7 +32,6 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -42,7 +41,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 TUTORIAL = os.path.join(ROOT, "tutorials", "fluidisedBed")
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 sys.path.insert(0, TUTORIAL)
-from foamCase import cell_centres, read_scalar_field  # noqa: E402
+from foamCase import cell_centres, read_scalar_field, sh  # noqa: E402
+from couplingTests import edit  # noqa: E402
 _cwd = os.getcwd()
 os.chdir(TUTORIAL)      # bedData reads the fluid and the beads' density where it is imported:
 import bedData  # noqa: E402,I100   the same in every run (parcels keep the beads' density)
@@ -58,24 +58,17 @@ MESH = dict(NX=16, NY=2, NZ=40, NZP=2)      # cells of 3 mm, as the tutorial's d
 
 
 def shell(cmd, cwd, log=None):
-    full = ". %s/etc/bashrc >/dev/null && %s" % (ROOT, cmd)
-    with open(log, "w") if log else open(os.devnull, "w") as out:
-        rc = subprocess.run(full, shell=True, cwd=cwd, stdout=out, stderr=subprocess.STDOUT,
-                            executable="/bin/bash").returncode
+    """foamCase.sh with the output kept in log"""
+    rc, out = sh(cmd, cwd, check=False)
+    if log:
+        with open(log, "w") as f:
+            f.write(out)
     if rc:
         raise RuntimeError("'%s' failed in %s%s" % (cmd, cwd, " (see %s)" % log if log else ""))
 
 
 def run_name(model, h, law, ramp):
     return "%s_%s_h%g%s" % ("ramp" if ramp else "bubbling", model, h, "" if h == 1 else "_" + law)
-
-
-def edit(path, pattern, replacement):
-    text = open(path).read()
-    new, n = re.subn(pattern, replacement, text, flags=re.M)
-    if n == 0:
-        raise RuntimeError("%s: no match for %r" % (path, pattern))
-    open(path, "w").write(new)
 
 
 def make_case(case, model, h, law, ramp, end):

@@ -440,10 +440,37 @@ def test_parcels():
               rc not in (0, 124) and needle in out and "coarseGraining" in out, "" if needle in out else out[-500:])
 
 
+def test_mueller_bed():
+    print("muellerBed tutorial: 9,240 poppy seeds in a 44 x 10 mm bed with walls, U = 0.9 m/s, 0.3 s")
+    case = copy_tutorial("muellerBed", "muellerBed")
+    rc, out = sh("./Allrun analytical 0.9 4 0.3", case, check=False)
+    check("Allrun completed", rc == 0, out[-1500:] if rc else "")
+    print("\n".join("    " + l for l in out.splitlines() if l.startswith("    ") and "t = " not in l))
+    log = os.path.join(case, "log.pimpleDEMFoam")
+    check_coupling_log("muellerBed", log, 0.2)
+    counts = [int(m) for m in re.findall(r"(?m)^coupling \d+: (\d+) particles", open(log).read())]
+    check("every seed stays in the bed (9240 particles at every coupling)",
+          len(counts) > 100 and set(counts) == {9240}, "(%d couplings, counts %s)" % (len(counts), sorted(set(counts))))
+    # the error left after each time step's last pressure corrector
+    errors = [float(m[-1]) for m in (re.findall(r"continuity errors : sum local = (\S+),", step)
+                                     for step in open(log).read().split("\nTime = ")[1:]) if m]
+    check("fluid mass: continuity error of every time step below 1e-9 (sum local)",
+          len(errors) > 1000 and max(errors) < 1e-9, "(%d steps, largest %.2e)" % (len(errors), max(errors or [0])))
+    for kind, column, lo, hi in (("voidfraction", "voidfraction", 0.2, 1.0), ("particleVelocity", "vz_m_s", -5, 5)):
+        for height in ("16.4", "31.2"):
+            path = os.path.join(case, "postProcessing", "profiles", "%s_h%smm.csv" % (kind, height))
+            ok = os.path.isfile(path) and open(path).readline().strip() == "x_m," + column
+            data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2) if ok else np.zeros((0, 2))
+            check("%s at %s mm: written across the width, finite, within [%g, %g]" % (kind, height, lo, hi),
+                  ok and len(data) >= 9 and np.isfinite(data).all() and data[:, 0].min() > 0
+                  and data[:, 0].max() < 0.044 and data[:, 1].min() >= lo and data[:, 1].max() <= hi,
+                  "(%d points, %.4g..%.4g)" % (len(data), data[:, 1].min(), data[:, 1].max()) if len(data) else "")
+
+
 def main():
     checks.run([test_settling_sphere, test_drag_laws, test_restart, test_serial_parallel,
                 test_bad_input, test_parcels, test_packed_bed,
-                test_fluidised_bed], sys.argv[1:])
+                test_fluidised_bed, test_mueller_bed], sys.argv[1:])
     return checks.summary("coupling")
 
 

@@ -3,8 +3,9 @@
 """Tests of the voxel, hybrid, kernel and diffusion models on real meshes.
 References: sums of sphere volumes, the analytical model's exact overlap
 (itself tested against closed forms and numerical integration), an
-independent Python evaluation of the Gaussian kernel (seed Eq. 8), the
-centroid split, and the serial run for the parallel one."""
+independent Python evaluation of the Gaussian kernel (Kalderon et al.'s Eq. 8),
+of their explicit diffusion step (Eq. 20) and of a voxel count, the centroid
+split, and the serial run for the parallel one."""
 import math
 import os
 import random
@@ -304,6 +305,91 @@ def test_parallel_periodic():
     serial_vs_parallel("box periodic in y, split in x", case, "p.dump", "analytical", 1e-12)
 
 
+def grid_index(point, h, n):
+    return tuple(min(int(point[d] // h), n - 1) for d in range(3))
+
+
+def test_explicit_diffusion_is_eq20():
+    print("diffusion, integration explicit: Kalderon et al.'s Eq. 20 applied to the centroid field")
+    n, h = 8, L / 8
+    cyc = {a + b: "type cyclic; neighbourPatch %s%s;" % (a, "max" if b == "min" else "min")
+           for a in "xyz" for b in ("min", "max")}
+    case = new_case(os.path.join(WORK, "est-eq20"), box_block_mesh(LO, HI, (n, n, n), patches=cyc))
+    c, r = random_spheres(600, 0.0004, 0.0012, LO, HI, seed=21, periodic_axes=(0, 1, 2))
+    write_dump(os.path.join(case, "p.dump"), c, r)
+    V, C = cell_volumes(case), cell_centres(case)
+    # the centroid split, by grid index (independent of the C++)
+    solid = {}
+    for x, rad in zip(c, r):
+        key = grid_index(x, h, n)
+        solid[key] = solid.get(key, 0.0) + sphere_volume(rad) / h ** 3
+    field = [[[solid.get((i, j, k), 0.0) for k in range(n)] for j in range(n)] for i in range(n)]
+
+    def eq20(f, a):
+        return [[[f[i][j][k] + a * (f[(i + 1) % n][j][k] + f[i - 1][j][k] + f[i][(j + 1) % n][k] + f[i][j - 1][k]
+                                    + f[i][j][(k + 1) % n] + f[i][j][k - 1] - 6 * f[i][j][k])
+                  for k in range(n)] for j in range(n)] for i in range(n)]
+
+    for a, steps in ((0.12, 1), (0.3, 2)):
+        ref = field
+        for _ in range(steps):
+            ref = eq20(ref, a / steps)
+        got = model_solid(case, "p.dump", "diffusion", V, "integration explicit; coefficient %r; nSteps %d;" % (a, steps))
+        worst = max(abs(g / v - ref[i][j][k])
+                    for g, v, (i, j, k) in zip(got, V, (grid_index(x, h, n) for x in C)))
+        near("a = %g in %d step(s): solid fraction = Eq. 20 applied %d time(s), max |difference|" % (a, steps, steps),
+             worst, 0, 1e-13)
+        near("a = %g in %d step(s): total solid volume conserved (rel)" % (a, steps),
+             sum(got) / sum(sphere_volume(x) for x in r), 1, 1e-13)
+    set_coupling(case, "voidFractionModel diffusion;\nalphaMin 0.01;\n"
+                 "diffusionCoeffs { integration explicit; coefficient 0.3; }\n")
+    rc, out = run_model(case, "p.dump", "diffusion")
+    check("a = 0.3 in one explicit step (6 a > 1) is refused and names the stable nSteps (2)",
+          rc != 0 and "unstable" in out and "Use nSteps 2 or more" in out and "diffusionCoeffs" in out,
+          out[-300:] if rc == 0 else "")
+
+
+def test_voxels_per_cell():
+    print("voxel, voxelsPerCell: each cell divided evenly, against a Python voxel count")
+    n, per = 6, 4
+    h = L / (n * per)
+    case = new_case(os.path.join(WORK, "est-voxel-cell"), box_block_mesh(LO, HI, (n, n, n)))
+    c, r = random_spheres(400, 0.0004, 0.0015, LO, HI, seed=22)
+    write_dump(os.path.join(case, "p.dump"), c, r)
+    V, C = cell_volumes(case), cell_centres(case)
+    ref = {}
+    for x, rad in zip(c, r):
+        counts = {}
+        lo = [max(int((x[d] - rad) / h - 0.5), 0) for d in range(3)]
+        hi = [min(int((x[d] + rad) / h + 0.5), n * per - 1) for d in range(3)]
+        for i in range(lo[0], hi[0] + 1):
+            for j in range(lo[1], hi[1] + 1):
+                for k in range(lo[2], hi[2] + 1):
+                    p = ((i + 0.5) * h, (j + 0.5) * h, (k + 0.5) * h)
+                    if sum((p[d] - x[d]) ** 2 for d in range(3)) <= rad * rad:
+                        key = (i // per, j // per, k // per)
+                        counts[key] = counts.get(key, 0) + 1
+        total = sum(counts.values())
+        if total == 0:      # no voxel centre in it: the cell of its centre
+            counts, total = {grid_index(x, L / n, n): 1}, 1
+        for key, m in counts.items():
+            ref[key] = ref.get(key, 0.0) + sphere_volume(rad) * m / total
+    got = model_solid(case, "p.dump", "voxel", V, "voxelsPerCell %d;" % per)
+    worst = max(abs(g - ref.get(grid_index(x, L / n, n), 0.0)) for g, x in zip(got, C))
+    near("%d voxels per cell edge: solid volume per cell = Python count, max |difference| / sphere volume"
+         % per, worst / sphere_volume(0.0004), 0, 1e-9)
+    for name, mesh, needle in (
+            ("tetrahedral", None, "equal axis-aligned box cells"),
+            ("graded", box_block_mesh(LO, HI, (6, 6, 6), grading=(2, 1, 1)), "cells of one size")):
+        bad = tet_case(os.path.join(WORK, "est-voxel-cell-tet")) if mesh is None else \
+            new_case(os.path.join(WORK, "est-voxel-cell-graded"), mesh)
+        write_dump(os.path.join(bad, "p.dump"), c[:5], r[:5])
+        set_coupling(bad, "voidFractionModel voxel;\nvoxelCoeffs { voxelsPerCell 4; }\n")
+        rc, out = run_model(bad, "p.dump", "voxel")
+        check("%s mesh: voxelsPerCell is refused with '%s'" % (name, needle), rc != 0 and needle in out,
+              out[-300:] if rc == 0 else "")
+
+
 def test_bad_coefficients():
     print("bad coefficients: clear errors")
     case = new_case(os.path.join(WORK, "est-bad"), box_block_mesh(LO, HI, (4, 4, 4)))
@@ -314,11 +400,13 @@ def test_bad_coefficients():
         ("kernel", "cutoff 0;", "cutoff must be a positive number"),
         ("voxel", "voxelsPerSide 0;", "voxelsPerSide must be a positive number"),
         ("voxel", "voxelSize 1e-4; voxelsPerDiameter 10;", "not several"),
+        ("voxel", "voxelsPerCell 2.5;", "voxelsPerCell must be a whole number"),
         ("hybrid", "subGridResolution 0;", "subGridResolution must be a positive number"),
         ("hybrid", "subGridResolution 2.5;", "whole number"),
         ("diffusion", "initial pcm;", "initial must be centroid or analytical"),
         ("diffusion", "coefficient -0.1;", "coefficient must be a positive number"),
         ("diffusion", "nSteps 0;", "nSteps must be a positive number"),
+        ("diffusion", "integration rk4;", "integration rk4 is not one of"),
         ("diffusion", "laplacianScheme \"Gauss cubicSpline corrected\";", "cubicSpline"),
     ]
     for model, coeffs, needle in bad:
@@ -332,7 +420,7 @@ def test_bad_coefficients():
 
 def main():
     checks.run([test_conservation, test_grid_against_walk, test_convex_cells_against_boxes, test_convergence, test_vanishing_bandwidth, test_kernel_reference,
-                test_diffusion_is_gaussian, test_cyclic, test_parallel, test_parallel_periodic,
+                test_diffusion_is_gaussian, test_explicit_diffusion_is_eq20, test_voxels_per_cell, test_cyclic, test_parallel, test_parallel_periodic,
                 test_bad_coefficients], sys.argv[1:])
     return checks.summary("estimators")
 

@@ -13,6 +13,7 @@
 #include "fvc.H"
 #include "zeroGradientFvPatchFields.H"
 #include "IStringStream.H"
+#include "readChoice.H"
 
 namespace Foam
 {
@@ -22,6 +23,14 @@ namespace voidFractionModels
     addToRunTimeSelectionTable(voidFractionModel, diffusion, dictionary);
 }
 }
+
+
+const Foam::Enum<Foam::voidFractionModels::diffusion::integration>
+Foam::voidFractionModels::diffusion::integrationNames
+({
+    { integration::implicitEuler, "implicit" },
+    { integration::explicitEuler, "explicit" },
+});
 
 
 Foam::dictionary Foam::voidFractionModels::diffusion::defaultSolver()
@@ -46,6 +55,10 @@ Foam::voidFractionModels::diffusion::diffusion
     analytical(modelType, dict, mesh),
     fromAnalytical_(false),
     nSteps_(label(positiveCoeff("nSteps", 1))),
+    integration_
+    (
+        readChoice(coeffs_, "integration", integrationNames, integration::implicitEuler)
+    ),
     laplacianScheme_
     (
         coeffs_.lookupOrDefault<string>("laplacianScheme", "Gauss linear uncorrected")
@@ -131,6 +144,30 @@ Foam::voidFractionModels::diffusion::diffusion
     }
     IStringStream schemeStream(laplacianScheme_);
     scheme_ = fv::laplacianScheme<scalar, scalar>::New(mesh, schemeStream);
+    if (integration_ == integration::explicitEuler) checkExplicitStability();
+}
+
+
+void Foam::voidFractionModels::diffusion::checkExplicitStability() const
+{
+    surfaceScalarField transfer(D_*mesh_.magSf()*mesh_.nonOrthDeltaCoeffs()/nSteps_);
+    // walls carry no flux: only coupled patches pass volume on
+    for (fvsPatchScalarField& pf : transfer.boundaryFieldRef())
+    {
+        if (!pf.coupled()) pf = 0;
+    }
+    const scalarField given(fvc::surfaceSum(transfer)().primitiveField()/mesh_.V());
+    const scalar worst = returnReduce(gMax(given), maxOp<scalar>());
+    if (worst > 1 + 1e-12)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "integration explicit is unstable with nSteps " << nSteps_
+            << " in " << coeffs_.name() << ": a cell would give away "
+            << worst << " times what it holds in one step (at most 1; the"
+            << " paper's coefficient a at most 1/(2 dim)). Use nSteps "
+            << label(std::ceil(worst*nSteps_ - 1e-12))
+            << " or more, or integration implicit" << exit(FatalIOError);
+    }
 }
 
 
@@ -153,6 +190,16 @@ void Foam::voidFractionModels::diffusion::smoothVolumes(scalarField& cellVolumes
 
     fv::laplacianScheme<scalar, scalar>& scheme = scheme_.ref();
     const dimensionedScalar dTau("dTau", dimTime, 1.0/nSteps_);
+    if (integration_ == integration::explicitEuler)
+    {
+        for (label step = 0; step < nSteps_; ++step)
+        {
+            phi_ = phi_ + dTau*scheme.fvcLaplacian(D_, phi_);
+            phi_.correctBoundaryConditions();
+        }
+        cellVolumes = phi_.primitiveField()*V;
+        return;
+    }
     for (label step = 0; step < nSteps_; ++step)
     {
         const volScalarField phiOld("phiOld", phi_);

@@ -27,9 +27,11 @@ Foam::voidFractionModels::voxel::voxel
     sphereWalkVoidFraction(modelType, dict, mesh),
     origin_(mesh.bounds().min()),
     voxelSize_(Zero),
-    voxelsPerDiameter_(0)
+    voxelsPerDiameter_(0),
+    alignedWithCells_(false)
 {
-    const wordList keys({"voxelsPerSide", "voxelSize", "voxelsPerDiameter"});
+    const wordList keys
+    ({"voxelsPerSide", "voxelSize", "voxelsPerDiameter", "voxelsPerCell"});
     label nGiven = 0;
     for (const word& key : keys) nGiven += coeffs_.found(key);
     if (nGiven > 1)
@@ -47,6 +49,18 @@ Foam::voidFractionModels::voxel::voxel
     {
         voxelsPerDiameter_ = positiveCoeff("voxelsPerDiameter");
     }
+    else if (coeffs_.found("voxelsPerCell"))
+    {
+        const scalar n = positiveCoeff("voxelsPerCell");
+        if (n != std::round(n))
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "voxelsPerCell must be a whole number, got " << n
+                << " in " << coeffs_.name() << exit(FatalIOError);
+        }
+        voxelSize_ = equalBoxCellSize()/n;
+        alignedWithCells_ = true;
+    }
     else
     {
         voxelSize_ = mesh.bounds().span()/positiveCoeff("voxelsPerSide", seedDefault(50, 300));
@@ -56,6 +70,43 @@ Foam::voidFractionModels::voxel::voxel
     Info<< "voxel: voxel size ";
     if (voxelsPerDiameter_ > 0) Info<< "diameter/" << voxelsPerDiameter_ << endl;
     else Info<< voxelSize_ << " m" << endl;
+}
+
+
+Foam::vector Foam::voidFractionModels::voxel::equalBoxCellSize() const
+{
+    // each cell's bounding box must be the cell (volume) and every box the
+    // same, on every rank
+    const scalar tol = 1e-9;
+    vector lo(vector::max), hi(vector::min);
+    const labelListList& cellPoints = mesh_.cellPoints();
+    forAll(cellPoints, celli)
+    {
+        const boundBox bb(mesh_.points(), cellPoints[celli], false);
+        const vector span = bb.span();
+        if (mag(span.x()*span.y()*span.z() - mesh_.V()[celli]) > tol*mesh_.V()[celli])
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "voxelsPerCell needs a mesh of equal axis-aligned box cells"
+                << " (a uniform blockMesh); cell " << celli << " at "
+                << mesh_.C()[celli] << " is not a box. Use voxelsPerSide,"
+                << " voxelSize or voxelsPerDiameter in " << coeffs_.name()
+                << exit(FatalIOError);
+        }
+        lo = min(lo, span);
+        hi = max(hi, span);
+    }
+    reduce(lo, minOp<vector>());
+    reduce(hi, maxOp<vector>());
+    if (cmptMax(hi - lo) > tol*cmptMax(hi))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "voxelsPerCell needs cells of one size; the cell edges range"
+            << " from " << lo << " to " << hi << " m. Use voxelsPerSide,"
+            << " voxelSize or voxelsPerDiameter in " << coeffs_.name()
+            << exit(FatalIOError);
+    }
+    return hi;
 }
 
 
@@ -86,8 +137,13 @@ void Foam::voidFractionModels::voxel::distribute
             // side a tied centre lands on would depend on round-off (and on
             // the decomposition)
             // a periodic image carries the particle's voxels with it
-            vector o = origin_ + imageShift(p)
-              + cmptMultiply(h, vector(0.1*sqrt(2.0), 0.1*sqrt(3.0), 0.1*sqrt(5.0)));
+            // (voxels dividing the cells evenly have their centres half a
+            // voxel from every face already)
+            vector o = origin_ + imageShift(p);
+            if (!alignedWithCells_)
+            {
+                o += cmptMultiply(h, vector(0.1*sqrt(2.0), 0.1*sqrt(3.0), 0.1*sqrt(5.0)));
+            }
             if (twoD_) o[emptyDir_] = origin_[emptyDir_];
             const sphereOverlap::lattice L{{o.x(), o.y(), o.z()}, {h.x(), h.y(), h.z()}};
             appendLatticeSplit(seed, x[p], r[p], L);

@@ -141,6 +141,7 @@ def parse_report(out):
         "meshed": num(r"of the particles inside the mesh (\S+),"),
         "outside": num(r"centre outside the mesh (\S+),"),
         "moved": num(r"volume moved by alphaMin (\S+)"),
+        "conservation": num(r"conservation error (\S+)"),
         "min": num(r"void fraction min (\S+)"),
         "rate": num(r"s, (\S+) particles/s"),
         "median": num(r"median of \d+ (\S+) s"),

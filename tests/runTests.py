@@ -86,8 +86,8 @@ def test_closed_forms():
     near("sphere centred on a wall: the mesh holds V/2 (rel)",
          sum((1 - a) * v for a, v in zip(alpha, V)) / (sphere_volume(R) / 2), 1, 1e-12)
     m = re.search(r"volume outside (\S+)", out)
-    near("sphere centred on a wall: V/2 reported outside (rel)",
-         float(m.group(1)) / (sphere_volume(R) / 2) if m else None, 1, 1e-12)
+    near("sphere centred on a wall: V/2 reported outside (rel, to the 4 digits printed)",
+         float(m.group(1)) / (sphere_volume(R) / 2) if m else None, 1, 5e-4)
 
 
 def graded_centroid_reference():
@@ -352,37 +352,25 @@ def test_dump_series():
           close, out[-400:] if rc else "")
 
 
-def test_keep_weights():
-    print("keepDistance: particles that moved less keep last step's weights")
+def test_previous_step():
+    print("-previous: the search starts from each particle's cell one step before; the field is the dump's alone")
     cyc = {"xmin": "type cyclic; neighbourPatch xmax;", "xmax": "type cyclic; neighbourPatch xmin;"}
-    case = new_case(os.path.join(WORK, "keep"), box_block_mesh(LO, HI, (10, 10, 10), patches=cyc))
+    case = new_case(os.path.join(WORK, "previous"), box_block_mesh(LO, HI, (10, 10, 10), patches=cyc))
     c, r = random_spheres(1000, 0.0004, 0.0012, LO, HI, seed=8, periodic_axes=(0,))
-    # particles well inside move by 1e-7 m (kept at keepDistance 1e-6), the
-    # rest, including all near the periodic sides, by 2e-4 m (recomputed)
-    small = [0.3 * L < p[0] < 0.7 * L for p in c]
-    moved = [(p[0], p[1] + (1e-7 if s else 2e-4), p[2]) for p, s in zip(c, small)]
-    expected = [p if s else q for p, q, s in zip(c, moved, small)]
+    # half the particles move by 1e-7 m, the others by 2e-4 m, some across the cyclic sides
+    moved = [((p[0] + (1e-7 if i % 2 else 2e-4)) % L, p[1], p[2]) for i, p in enumerate(c)]
     write_dump(os.path.join(case, "before.dump"), c, r)
     write_dump(os.path.join(case, "after.dump"), moved, r)
-    write_dump(os.path.join(case, "expected.dump"), expected, r)
     for model in ("analytical", "hybrid", "kernel"):
-        set_coupling(case, "voidFractionModel %s;\nalphaMin 0.05;\nkeepDistance 1e-6;\n" % model)
-        rc, out = sh("demVoidFraction -previous before.dump -dump after.dump -name kept", case, check=False)
-        kept = re.search(r"particles that kept their weights (\d+)", out)
-        check("%s: the slow particles kept their weights" % model, rc == 0 and kept and int(kept.group(1)) == sum(small),
-              "(%s of %d)" % (kept.group(1) if kept else "?", sum(small)))
         set_coupling(case, "voidFractionModel %s;\nalphaMin 0.05;\n" % model)
-        rc2, _ = sh("demVoidFraction -dump expected.dump -name expected", case, check=False)
+        rc, out = sh("demVoidFraction -previous before.dump -dump after.dump -name withPrevious", case, check=False)
+        rc2, _ = sh("demVoidFraction -dump after.dump -name alone", case, check=False)
+        check("%s: runs with -previous" % model, rc == 0 and rc2 == 0, out[-400:] if rc else "")
         if rc == 0 and rc2 == 0:
-            a = read_scalar_field(os.path.join(case, "0", "kept"))
-            b = read_scalar_field(os.path.join(case, "0", "expected"))
-            near("%s: field = the field of the kept rows' positions, max |d alpha|" % model,
-                 max(abs(x - y) for x, y in zip(a, b)), 0, 1e-12)
-    rc, out = sh("demVoidFraction -previous before.dump -dump after.dump", case, check=False)
-    check("keepDistance absent: nothing kept", rc == 0 and "particles that kept their weights 0" in out)
-    set_coupling(case, "voidFractionModel analytical;\nkeepDistance -1;\n")
-    rc, out = sh("demVoidFraction -dump after.dump", case, check=False)
-    check("negative keepDistance: clear error", rc != 0 and "keepDistance must be" in out)
+            a = read_scalar_field(os.path.join(case, "0", "withPrevious"))
+            b = read_scalar_field(os.path.join(case, "0", "alone"))
+            near("%s: field after -previous = the dump mapped alone, max |d alpha|" % model,
+                 max(abs(x - y) for x, y in zip(a, b)), 0, 1e-14)
 
 
 def grid_planes(case):
@@ -441,7 +429,7 @@ def test_centre_search():
 
 def main():
     checks.run([test_closed_forms, test_thin_neighbour, test_meshes, test_fast_against_general, test_cyclic,
-                test_alpha_min, test_parallel, test_dump_series, test_keep_weights, test_centre_search, test_liggghts_in_process,
+                test_alpha_min, test_parallel, test_dump_series, test_previous_step, test_centre_search, test_liggghts_in_process,
                 test_bad_input], sys.argv[1:])
     return checks.summary("models")
 

@@ -126,8 +126,8 @@ int main(int argc, char *argv[])
     argList::addOption
     (
         "previous", "file",
-        "map this dump first, as the step before (keepDistance keeps the rows"
-        " of particles that moved less)"
+        "map this dump first, as the step before (the cell search then starts"
+        " from each particle's cell in it)"
     );
 
     #include "setRootCase.H"
@@ -176,6 +176,7 @@ int main(int argc, char *argv[])
         const scalar median =
             repeat > 0 ? medianCallTime(model(), particles, repeat, holders) : 0;
         model->report(Info);
+        const label precision = Sout.precision(4);
         Info<< "time per call: first " << firstCall << " s";
         if (repeat > 0)
         {
@@ -183,6 +184,7 @@ int main(int argc, char *argv[])
                 << model->stats().nParticles/max(median, VSMALL) << " particles/s";
         }
         Info<< endl;
+        Sout.precision(precision);
         volScalarField out
         (
             IOobject(fieldName, runTime.timeName(), mesh),

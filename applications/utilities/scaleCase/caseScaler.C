@@ -215,10 +215,10 @@ void Foam::caseScaler::scaleCoupling() const
     const fileName file(dir_/"constant"/"couplingProperties");
     if (!isFile(file)) return;
     dictionary dict(read(file));
-    const wordList lengths({"keepDistance", "voxelSize", "bandwidth"});
+    const wordList lengths({"voxelSize", "bandwidth"});
     const wordList unchanged
     ({
-        "couplingInterval", "alphaMin", "voxelsPerSide", "voxelsPerDiameter",
+        "couplingInterval", "alphaMin", "voxelsPerSide", "voxelsPerDiameter", "voxelsPerCell",
         "subGridResolution", "bandwidthOverCellSize", "cutoff", "coefficient",
         "nSteps", "factor"
     });

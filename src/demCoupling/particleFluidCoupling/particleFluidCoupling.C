@@ -516,8 +516,7 @@ void Foam::particleFluidCoupling::pushForces()
         << " fluid " << timeFluid_
         << "; alpha " << s.minVoidFraction << ".." << s.maxVoidFraction
         << ", momentum balance " << worstMomentumError_
-        << "; total fluid force on the particles " << totalForce_
-        << "; weights kept " << s.nKept << endl;
+        << "; total fluid force on the particles " << totalForce_ << endl;
 
     ++nCouplings_;
     fluidStep_ = 0;

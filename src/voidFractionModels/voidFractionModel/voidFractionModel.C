@@ -32,7 +32,6 @@ Foam::voidFractionModel::voidFractionModel
     emptyDir_(0),
     slabMid_(0),
     thickness_(0),
-    keepDistance_(dict.lookupOrDefault<scalar>("keepDistance", 0)),
     globalBounds_(mesh.bounds()),
     nParticles_(0),
     solid_(mesh.nCells(), 0),
@@ -53,12 +52,6 @@ Foam::voidFractionModel::voidFractionModel
     spreadAsMade_(false),
     rowsSpread_(false)
 {
-    if (!(keepDistance_ >= 0) || !std::isfinite(keepDistance_))
-    {
-        FatalIOErrorInFunction(dict)
-            << "keepDistance must be zero (off) or a positive distance, got "
-            << keepDistance_ << exit(FatalIOError);
-    }
     if (!(alphaMin_ >= 0 && alphaMin_ < 1))
     {
         FatalIOErrorInFunction(dict)
@@ -126,15 +119,8 @@ Foam::label Foam::voidFractionModel::collectStatistics(const particleData& parti
 
 void Foam::voidFractionModel::carryHints(const labelList& ids)
 {
-    if (ids == hintIds_)
-    {
-        // previous_ (for keepDistance) is then the identity
-        if (keepDistance_ > 0) previous_ = identity(ids.size());
-        return;
-    }
+    if (ids == hintIds_) return;
     labelList hints(ids.size(), -1);
-    previous_.setSize(ids.size());
-    previous_ = -1;
     auto ascending = [](const labelList& l)
     {
         for (label i = 1; i < l.size(); ++i) if (l[i] <= l[i - 1]) return false;
@@ -149,7 +135,6 @@ void Foam::voidFractionModel::carryHints(const labelList& ids)
             if (j < hintIds_.size() && hintIds_[j] == ids[i])
             {
                 hints[i] = hints_[j];
-                previous_[i] = j;
             }
         }
     }
@@ -174,7 +159,6 @@ void Foam::voidFractionModel::computeRows
 
     // images lie outside the mesh unless a particle is outside it
     centreCells_.setSize(x.size());
-    computedImages_.setSize(n);
     if (periodic)
     {
         forAll(x, i)
@@ -183,15 +167,10 @@ void Foam::voidFractionModel::computeRows
             centreCells_[i] = (i == firstEntry_[p]) ? centres[p]
               : globalBounds_.contains(x[i]) ? locator_.findCell(x[i]) : -1;
         }
-        forAll(computedImages_, p)
-        {
-            computedImages_[p] = firstEntry_[p + 1] - firstEntry_[p] > 1;
-        }
     }
     else
     {
         centreCells_ = centres;
-        computedImages_ = false;
     }
 
     weights_.clear();
@@ -224,13 +203,12 @@ void Foam::voidFractionModel::update
     const scalarField& r = particles.radii();
     carryHints(particles.ids());
     locator_.findCells(x0, hints_);
-    selectMoved(x0, r);
     particleVolumes_.setSize(n);
     forAll(particleVolumes_, p)
     {
         particleVolumes_[p] = particleVolume(r[p]);
     }
-    spreadAsMade_ = moved_.size() == n && keepDistance_ == 0 && !smooths();
+    spreadAsMade_ = !smooths();
     rowsSpread_ = false;
     if (spreadAsMade_)
     {
@@ -238,24 +216,10 @@ void Foam::voidFractionModel::update
         fractionSum_.setSize(n);
         fractionSum_ = Zero;
     }
-    if (moved_.size() == n)
-    {
-        computeRows(x0, r, hints_);
-    }
-    else
-    {
-        computeRows
-        (
-            pointField(x0, moved_),
-            scalarField(r, moved_),
-            labelList(UIndirectList<label>(hints_, moved_))
-        );
-    }
-    if (keepDistance_ > 0) keepRows(x0, r);
+    computeRows(x0, r, hints_);
     centreCells_ = hints_;
 
     stats_ = statistics();
-    stats_.nKept = n - moved_.size();
     if (!rowsSpread_) spreadVolumes();
     const label nOver = collectStatistics(particles);
     stats_.movedVolume = limitSolidFraction(nOver);
@@ -334,6 +298,9 @@ Foam::scalar Foam::voidFractionModel::positiveCoeff
 void Foam::voidFractionModel::report(Ostream& os) const
 {
     const statistics& s = stats_;
+    // read by a person: 4 significant digits (the conservation error is
+    // relative, so it keeps its meaning)
+    const int precision = os.precision(4);
     os  << type() << ": " << s.nParticles << " particles, volume "
         << s.particleVolume << nl
         << "    solid volume in the field " << s.solidVolume
@@ -345,6 +312,6 @@ void Foam::voidFractionModel::report(Ostream& os) const
         << ", volume outside " << s.particleVolume - s.meshedVolume << nl
         << "    void fraction min " << s.minVoidFraction
         << " max " << s.maxVoidFraction
-        << ", volume moved by alphaMin " << s.movedVolume << nl
-        << "    particles that kept their weights " << s.nKept << endl;
+        << ", volume moved by alphaMin " << s.movedVolume << endl;
+    os.precision(precision);
 }

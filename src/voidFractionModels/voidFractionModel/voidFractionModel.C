@@ -28,6 +28,7 @@ Foam::voidFractionModel::voidFractionModel
     coeffs_(dict.subOrEmptyDict(modelType + "Coeffs")),
     alphaMin_(dict.lookupOrDefault<scalar>("alphaMin", 0.1)),
     locator_(mesh),
+    limiter_(mesh, alphaMin_),
     twoD_(dict.lookupOrDefault<bool>("twoDimensional", false)),
     emptyDir_(0),
     slabMid_(0),
@@ -105,7 +106,7 @@ Foam::label Foam::voidFractionModel::collectStatistics(const particleData& parti
         else if (fractionSum[p] < 1 - 1e-9) sums[kNCut] += 1;
     }
     sums[kSolid] = sum(solid_);
-    sums[kNOver] = cellsOverLimit();
+    sums[kNOver] = limiter_.nOverLimit(solid_);
     reduce(sums, sumOp<scalarField>());
     stats_.nParticles = label(sums[kNParticles]);
     stats_.nOutside = label(sums[kNOutside]);
@@ -222,7 +223,7 @@ void Foam::voidFractionModel::update
     stats_ = statistics();
     if (!rowsSpread_) spreadVolumes();
     const label nOver = collectStatistics(particles);
-    stats_.movedVolume = limitSolidFraction(nOver);
+    stats_.movedVolume = limiter_.limit(solid_, nOver, stats_.solidVolume);
 
     const scalarField& V = mesh_.V();
     scalarField& alpha = voidFraction_.primitiveFieldRef();

@@ -403,7 +403,7 @@ def test_bad_coefficients():
         ("voxel", "voxelsPerCell 2.5;", "voxelsPerCell must be a whole number"),
         ("hybrid", "subGridResolution 0;", "subGridResolution must be a positive number"),
         ("hybrid", "subGridResolution 2.5;", "whole number"),
-        ("diffusion", "initial pcm;", "initial must be centroid or analytical"),
+        ("diffusion", "initial pcm;", "initial pcm is not one of"),
         ("diffusion", "coefficient -0.1;", "coefficient must be a positive number"),
         ("diffusion", "nSteps 0;", "nSteps must be a positive number"),
         ("diffusion", "integration rk4;", "integration rk4 is not one of"),

@@ -345,7 +345,7 @@ void Foam::particleFluidCoupling::beginStep
         beta_.setSize(n);
         scalarField cellBeta;
         vectorField cellBetaV;
-        voidFraction_->gatherTurnSpread
+        voidFraction_->gatherApplySpread
         (
             voidFraction_->voidFraction().primitiveField(), U.primitiveField(),
             cellBeta, cellBetaV,
@@ -434,7 +434,7 @@ void Foam::particleFluidCoupling::endStep
     };
     if (pressureGradientForce_)
     {
-        voidFraction_->gatherTurn(U.primitiveField(), fvc::grad(p)().primitiveField(), force);
+        voidFraction_->gatherApply(U.primitiveField(), fvc::grad(p)().primitiveField(), force);
     }
     else
     {

@@ -182,12 +182,12 @@ void Foam::voidFractionModel::gather
 }
 
 
-template<class TypeA, class TypeB, class Turn>
-void Foam::voidFractionModel::gatherTurn
+template<class TypeA, class TypeB, class PerParticle>
+void Foam::voidFractionModel::gatherApply
 (
     const Field<TypeA>& perCellA,
     const Field<TypeB>& perCellB,
-    const Turn& turn
+    const PerParticle& apply
 )
 {
     if (smooths() || Pstream::parRun())
@@ -195,7 +195,7 @@ void Foam::voidFractionModel::gatherTurn
         Field<TypeA> a;
         Field<TypeB> b;
         gather(perCellA, a, perCellB, b);
-        forAll(a, p) turn(p, a[p], b[p]);
+        forAll(a, p) apply(p, a[p], b[p]);
         return;
     }
     const label n = weights_.nParticles();
@@ -204,19 +204,19 @@ void Foam::voidFractionModel::gatherTurn
         TypeA sumA;
         TypeB sumB;
         rowSums(p, perCellA, perCellB, sumA, sumB);
-        turn(p, sumA, sumB);
+        apply(p, sumA, sumB);
     }
 }
 
 
-template<class TypeA, class TypeB, class SpreadA, class SpreadB, class Turn>
-void Foam::voidFractionModel::gatherTurnSpread
+template<class TypeA, class TypeB, class SpreadA, class SpreadB, class PerParticle>
+void Foam::voidFractionModel::gatherApplySpread
 (
     const Field<TypeA>& perCellA,
     const Field<TypeB>& perCellB,
     Field<SpreadA>& spreadA,
     Field<SpreadB>& spreadB,
-    const Turn& turn
+    const PerParticle& apply
 )
 {
     if (smooths() || Pstream::parRun())
@@ -225,10 +225,10 @@ void Foam::voidFractionModel::gatherTurnSpread
         const label n = weights_.nParticles();
         Field<SpreadA> sa(n);
         Field<SpreadB> sb(n);
-        gatherTurn
+        gatherApply
         (
             perCellA, perCellB,
-            [&](const label p, const TypeA& a, const TypeB& b) { turn(p, a, b, sa[p], sb[p]); }
+            [&](const label p, const TypeA& a, const TypeB& b) { apply(p, a, b, sa[p], sb[p]); }
         );
         spread(sa, spreadA, sb, spreadB);
         return;
@@ -239,14 +239,14 @@ void Foam::voidFractionModel::gatherTurnSpread
     spreadA = Zero;
     spreadB.setSize(mesh_.nCells());
     spreadB = Zero;
-    gatherTurn
+    gatherApply
     (
         perCellA, perCellB,
         [&](const label p, const TypeA& a, const TypeB& b)
         {
             SpreadA sa;
             SpreadB sb;
-            turn(p, a, b, sa, sb);
+            apply(p, a, b, sa, sb);
             for (label k = weights_.begin(p); k < weights_.end(p); ++k)
             {
                 const scalar w = weights_.fraction(k);

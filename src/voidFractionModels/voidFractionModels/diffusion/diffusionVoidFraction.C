@@ -25,6 +25,14 @@ namespace voidFractionModels
 }
 
 
+const Foam::Enum<Foam::voidFractionModels::diffusion::initialSplit>
+Foam::voidFractionModels::diffusion::initialSplitNames
+({
+    { initialSplit::centroid, "centroid" },
+    { initialSplit::analytical, "analytical" },
+});
+
+
 const Foam::Enum<Foam::voidFractionModels::diffusion::integration>
 Foam::voidFractionModels::diffusion::integrationNames
 ({
@@ -80,14 +88,9 @@ Foam::voidFractionModels::diffusion::diffusion
         zeroGradientFvPatchScalarField::typeName
     )
 {
-    const word initial(coeffs_.lookupOrDefault<word>("initial", "centroid"));
-    if (initial != "centroid" && initial != "analytical")
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "initial must be centroid or analytical, got " << initial
-            << " in " << coeffs_.name() << exit(FatalIOError);
-    }
-    fromAnalytical_ = (initial == "analytical");
+    fromAnalytical_ =
+        readChoice(coeffs_, "initial", initialSplitNames, initialSplit::centroid)
+     == initialSplit::analytical;
     if (scalar(nSteps_) != coeffs_.lookupOrDefault<scalar>("nSteps", 1))
     {
         FatalIOErrorInFunction(coeffs_)
@@ -101,7 +104,14 @@ Foam::voidFractionModels::diffusion::diffusion
             << ", not both" << exit(FatalIOError);
     }
     if (solverDict_.empty()) solverDict_ = defaultSolver();
+    readDiffusivity();
+    buildLaplacianScheme();
+    if (integration_ == integration::explicitEuler) checkExplicitStability();
+}
 
+
+void Foam::voidFractionModels::diffusion::readDiffusivity()
+{
     if (coeffs_.found("bandwidth"))
     {
         D_ = dimensionedScalar("D", dimViscosity, sqr(positiveCoeff("bandwidth"))/4);
@@ -111,9 +121,9 @@ Foam::voidFractionModels::diffusion::diffusion
         const scalar a = positiveCoeff("coefficient", seedDefault(0.12, 0.17));
         volScalarField D
         (
-            IOobject("D", mesh.time().timeName(), mesh,
+            IOobject("D", mesh_.time().timeName(), mesh_,
                      IOobject::NO_READ, IOobject::NO_WRITE, false),
-            mesh,
+            mesh_,
             dimensionedScalar(dimViscosity, Zero),
             zeroGradientFvPatchScalarField::typeName
         );
@@ -121,7 +131,11 @@ Foam::voidFractionModels::diffusion::diffusion
         D.correctBoundaryConditions();
         D_ = fvc::interpolate(D);
     }
+}
 
+
+void Foam::voidFractionModels::diffusion::buildLaplacianScheme()
+{
     // check the scheme now, against OpenFOAM's tables (its own message for
     // a scheme read from a string names no file)
     IStringStream is(laplacianScheme_);
@@ -143,8 +157,7 @@ Foam::voidFractionModels::diffusion::diffusion
             << exit(FatalIOError);
     }
     IStringStream schemeStream(laplacianScheme_);
-    scheme_ = fv::laplacianScheme<scalar, scalar>::New(mesh, schemeStream);
-    if (integration_ == integration::explicitEuler) checkExplicitStability();
+    scheme_ = fv::laplacianScheme<scalar, scalar>::New(mesh_, schemeStream);
 }
 
 

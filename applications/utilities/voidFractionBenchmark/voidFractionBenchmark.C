@@ -102,8 +102,8 @@ namespace
             m.error = 100*gSum(mag(n.primitiveField() - reference)/reference)/nCells;
         }
         m.smoothness = gSum(mag(fvc::grad(n))().primitiveField())/nCells;
-        const voidFractionModel::statistics& s = model->stats();
-        m.conservation = mag(s.solidVolume - s.meshedVolume)/max(s.meshedVolume, VSMALL);
+        const mappingStatistics& s = model->stats();
+        m.conservation = s.conservationError();
         return m;
     }
 }

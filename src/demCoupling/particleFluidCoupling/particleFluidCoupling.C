@@ -131,6 +131,27 @@ Foam::particleFluidCoupling::particleFluidCoupling
     totalForce_(Zero),
     mostHeld_(0)
 {
+    readForces();
+
+    // bad names fail before the DEM starts
+    drag_ = dragModel::New(dict_);
+    voidFraction_ = voidFractionModel::New(dict_, mesh);
+    distributor_.reset(new particleDistributor(voidFraction_()));
+    dem_.reset(new liggghtsCoupling(mesh.time(), dict_));
+    readTimeSteps();
+
+    // the initial state: the field the first interval starts from
+    mapParticles();
+    alpha_ = voidFraction_->voidFraction();
+    alpha_.oldTime();
+    checkParcels();
+    Info<< "particleFluidCoupling: formulation " << formulationNames[formulation_] << ", "
+        << voidFraction_->stats().nParticles << " particles" << endl;
+}
+
+
+void Foam::particleFluidCoupling::readForces()
+{
     formulation_ = readChoice(dict_, "formulation", formulationNames, formulation::A);
     for (const word& f : dict_.getOrDefault<wordList>("forces", wordList()))
     {
@@ -152,36 +173,25 @@ Foam::particleFluidCoupling::particleFluidCoupling
     removeOutside_ =
         readChoice(dict_, "particlesOutside", outsideActionNames, outsideAction::error)
      == outsideAction::remove;
+}
 
-    // bad names fail before the DEM starts
-    drag_ = dragModel::New(dict_);
-    voidFraction_ = voidFractionModel::New(dict_, mesh);
-    distributor_.reset(new particleDistributor(voidFraction_()));
-    dem_.reset(new liggghtsCoupling(mesh.time(), dict_));
-    readTimeSteps();
 
-    // the initial state: the field the first interval starts from
-    mapParticles();
-    alpha_ = voidFraction_->voidFraction();
-    alpha_.oldTime();
-    if (parcels_.active())
+void Foam::particleFluidCoupling::checkParcels() const
+{
+    if (!parcels_.active()) return;
+    Info<< "particleFluidCoupling: coarse-grained parcels, factor "
+        << parcels_.factor() << ", forces scaled "
+        << parcelScaling::lawNames[parcels_.forceScaling()] << endl;
+    // centroid puts a parcel's whole volume into one cell
+    const scalar widest = 2*gMax(particles_.radii());
+    const scalar narrowest = gMin(cbrt(mesh_.V().field()));
+    if (voidFraction_->type() == "centroid" && widest > narrowest)
     {
-        Info<< "particleFluidCoupling: coarse-grained parcels, factor "
-            << parcels_.factor() << ", forces scaled "
-            << parcelScaling::lawNames[parcels_.forceScaling()] << endl;
-        // centroid puts a parcel's whole volume into one cell
-        const scalar widest = 2*gMax(particles_.radii());
-        const scalar narrowest = gMin(cbrt(mesh.V().field()));
-        if (voidFraction_->type() == "centroid" && widest > narrowest)
-        {
-            WarningInFunction
-                << "parcels up to " << widest << " m wide on cells from "
-                << narrowest << " m: centroid puts each parcel's volume into"
-                << " one cell; analytical, kernel or diffusion spread it" << endl;
-        }
+        WarningInFunction
+            << "parcels up to " << widest << " m wide on cells from "
+            << narrowest << " m: centroid puts each parcel's volume into"
+            << " one cell; analytical, kernel or diffusion spread it" << endl;
     }
-    Info<< "particleFluidCoupling: formulation " << formulationNames[formulation_] << ", "
-        << voidFraction_->stats().nParticles << " particles" << endl;
 }
 
 
@@ -393,26 +403,25 @@ void Foam::particleFluidCoupling::beginStep
 }
 
 
-void Foam::particleFluidCoupling::endStep
+void Foam::particleFluidCoupling::addFluidForces
 (
     const volVectorField& U,
-    const volScalarField& p
+    const volScalarField& p,
+    const bool last,
+    vector& dragSum,
+    vector& meanSum
 )
 {
-    timeFluid_ += clock_.timeIncrement();
-
     const vectorField& v = particles_.velocities();
     const scalarField& volumes = voidFraction_->particleVolumes();
 
     // drag with the same weights as the fluid's, and the others; the sums
     // over the particles (each once) in the same pass: this step's drag,
     // and at the end of the interval the mean force
-    const bool last = (fluidStep_ == fluidStepsPerCoupling_);
     const scalar perStep = 1/scalar(fluidStepsPerCoupling_);
     const particleHolders& holders = voidFraction_->holders();
     vectorField& F = forceSum_;
     if (last) forceMean_.setSize(F.size());
-    vector dragSum(Zero), meanSum(Zero);
     auto force = [&](const label i, const vector& Up, const vector& gradP)
     {
         const vector drag(beta_[i]*(Up - weightSum_[i]*v[i]));
@@ -442,6 +451,17 @@ void Foam::particleFluidCoupling::endStep
         voidFraction_->gather(U.primitiveField(), Up);
         forAll(Up, i) force(i, Up[i], Zero);
     }
+}
+
+
+void Foam::particleFluidCoupling::checkMomentumBalance
+(
+    const volVectorField& U,
+    const bool last,
+    const vector& dragSum,
+    const vector& meanSum
+)
+{
     // what the particles gained and what the fluid lost to them in this
     // step's equations; at the end of the interval also the total force
     // and the particles each rank holds, for the log: one reduction
@@ -476,6 +496,22 @@ void Foam::particleFluidCoupling::endStep
         totalForce_ = get(6);
         mostHeld_ = label(max(SubList<scalar>(sums, nProcs, 9)));
     }
+}
+
+
+void Foam::particleFluidCoupling::endStep
+(
+    const volVectorField& U,
+    const volScalarField& p
+)
+{
+    timeFluid_ += clock_.timeIncrement();
+
+    // at the end of the interval the mean force goes to the DEM
+    const bool last = (fluidStep_ == fluidStepsPerCoupling_);
+    vector dragSum(Zero), meanSum(Zero);
+    addFluidForces(U, p, last, dragSum, meanSum);
+    checkMomentumBalance(U, last, dragSum, meanSum);
     if (mesh_.time().writeTime())
     {
         Ksl_.correctBoundaryConditions();
@@ -507,7 +543,7 @@ void Foam::particleFluidCoupling::pushForces()
     }
     timeExchange_ += clock_.timeIncrement();
 
-    const voidFractionModel::statistics& s = voidFraction_->stats();
+    const mappingStatistics& s = voidFraction_->stats();
     Info<< "coupling " << nCouplings_ << ": " << s.nParticles
         << " particles (at most " << mostHeld_ << " on a rank), seconds DEM " << timeDem_
         << " exchange " << timeExchange_

@@ -40,10 +40,10 @@ Foam::particleDistributor::particleDistributor(const voidFractionModel& model)
             }
         }
     }
-    const List<vector>& shifts = model.periodicShifts();
+    const List<vector>& shifts = model.images().shifts();
     forAll(shifts, s)
     {
-        if ((model.shiftDirections()[s] & ~splitDirections_) == 0)
+        if ((model.images().shiftDirections()[s] & ~splitDirections_) == 0)
         {
             splitShifts_.append(shifts[s]);
         }
@@ -112,19 +112,11 @@ Foam::particleHolders Foam::particleDistributor::distribute
 }
 
 
-Foam::particleHolders Foam::particleDistributor::distribute
+Foam::labelListList Foam::particleDistributor::destinations
 (
-    const particleData& owned,
-    particleData& held
+    const particleData& owned
 ) const
 {
-    if (!Pstream::parRun())
-    {
-        // one rank holds all: only the id order to make
-        held = owned.reordered(idOrder(owned.ids()));
-        return particleHolders();
-    }
-
     const label nProcs = Pstream::nProcs();
     const label me = Pstream::myProcNo();
     const List<vector>& shifts = splitShifts_;
@@ -137,7 +129,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
         const scalar R = model_.reach(r[p]);
         // only a particle near a periodic side has images that matter
         const bool nearSide =
-            splitDirections_ && model_.nearPeriodicSide(x[p], R, splitDirections_);
+            splitDirections_ && model_.images().nearSide(x[p], R, splitDirections_);
         // most of the owned particles lie well inside this rank's cells
         if (alone_ && !nearSide && inside(boxes_[me], x[p], R))
         {
@@ -160,20 +152,34 @@ Foam::particleHolders Foam::particleDistributor::distribute
         }
         if (!sent) sends[Pstream::masterNo()].append(p);
     }
-
-    // one message per rank with everything: the ids tell the receiver in
-    // which order it keeps the particles
-    const vectorField& v = owned.velocities();
-    const bool withU = (v.size() == owned.size() && owned.size());
     labelListList subMap(nProcs);
     forAll(sends, rank) subMap[rank].transfer(sends[rank]);
-    const labelListList flags(particleHolders::sentFlags(owned.size(), subMap));
+    return subMap;
+}
+
+
+void Foam::particleDistributor::incomingParticles::exchange
+(
+    const particleData& owned,
+    const labelListList& subMap,
+    const labelListList& flags
+)
+{
+    // one message per rank with everything: the ids tell the receiver in
+    // which order it keeps the particles
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+    const pointField& x = owned.positions();
+    const scalarField& r = owned.radii();
+    const vectorField& v = owned.velocities();
+    const bool withU = (v.size() == owned.size() && owned.size());
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    List<labelList> receivedIds(nProcs), receivedFlags(nProcs);
-    List<pointField> receivedX(nProcs);
-    List<scalarField> receivedR(nProcs);
-    List<vectorField> receivedU(nProcs);
-    forAll(sends, rank)
+    receivedIds.setSize(nProcs);
+    receivedFlags.setSize(nProcs);
+    receivedX.setSize(nProcs);
+    receivedR.setSize(nProcs);
+    receivedU.setSize(nProcs);
+    forAll(subMap, rank)
     {
         const labelList& send = subMap[rank];
         if (send.empty()) continue;
@@ -190,7 +196,8 @@ Foam::particleHolders Foam::particleDistributor::distribute
     }
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
-    label nHeld = 0, nWithU = 0;
+    nHeld = 0;
+    nWithU = 0;
     forAll(receivedIds, rank)
     {
         if (rank != me && recvSizes[rank])
@@ -208,6 +215,33 @@ Foam::particleHolders Foam::particleDistributor::distribute
             << "some ranks' particles have velocities and others' not"
             << abort(FatalError);
     }
+}
+
+
+Foam::particleHolders Foam::particleDistributor::distribute
+(
+    const particleData& owned,
+    particleData& held
+) const
+{
+    if (!Pstream::parRun())
+    {
+        // one rank holds all: only the id order to make
+        held = owned.reordered(idOrder(owned.ids()));
+        return particleHolders();
+    }
+
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+    const pointField& x = owned.positions();
+    const scalarField& r = owned.radii();
+    const vectorField& v = owned.velocities();
+    labelListList subMap(destinations(owned));
+    const labelListList flags(particleHolders::sentFlags(owned.size(), subMap));
+    incomingParticles in;
+    in.exchange(owned, subMap, flags);
+    const List<labelList>& receivedIds = in.receivedIds;
+    const label nHeld = in.nHeld, nWithU = in.nWithU;
 
     labelList allIds(nHeld);
     label k = 0;
@@ -227,9 +261,9 @@ Foam::particleHolders Foam::particleDistributor::distribute
         // the particles kept here come straight from owned
         const bool mine = (rank == me);
         const labelList& send = subMap[me];
-        const pointField& fromX = mine ? x : receivedX[rank];
-        const scalarField& fromR = mine ? r : receivedR[rank];
-        const vectorField& fromU = mine ? v : receivedU[rank];
+        const pointField& fromX = mine ? x : in.receivedX[rank];
+        const scalarField& fromR = mine ? r : in.receivedR[rank];
+        const vectorField& fromU = mine ? v : in.receivedU[rank];
         labelList& construct = constructMap[rank];
         construct.setSize(receivedIds[rank].size());
         forAll(construct, i)
@@ -240,7 +274,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
             heldX[to] = fromX[from];
             heldR[to] = fromR[from];
             heldIds[to] = receivedIds[rank][i];
-            heldFlags[to] = receivedFlags[rank][i];
+            heldFlags[to] = in.receivedFlags[rank][i];
             if (nWithU) heldU[to] = fromU[from];
         }
     }

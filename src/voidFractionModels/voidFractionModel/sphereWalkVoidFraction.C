@@ -18,18 +18,18 @@ Foam::sphereWalkVoidFraction::sphereWalkVoidFraction
     overlap_(mesh),
     gridWraps_(0)
 {
-    if (twoD_) overlap_.setTwoDimensional(emptyDir_, thickness_);
-    if (!locator_.isTensorGrid() || twoD_) return;
-    const scalar tol = 1e-9*globalBounds_.mag();
+    if (twoDimensional()) overlap_.setTwoDimensional(emptyDirection(), slabThickness());
+    if (!locator().isTensorGrid() || twoDimensional()) return;
+    const scalar tol = 1e-9*images().bounds().mag();
     for (direction d = 0; d < 3; ++d)
     {
-        if (!((periodicDirections_ >> d) & 1)) continue;
-        const scalarList& g = locator_.gridPlanes(d);
-        const scalar span = globalBounds_.span()[d];
+        if (!((images().directions() >> d) & 1)) continue;
+        const scalarList& g = locator().gridPlanes(d);
+        const scalar span = images().bounds().span()[d];
         bool wraps =
-            mag(g.first() - globalBounds_.min()[d]) < tol
-         && mag(g.last() - globalBounds_.max()[d]) < tol;
-        for (const vector& S : periodicShifts_)
+            mag(g.first() - images().bounds().min()[d]) < tol
+         && mag(g.last() - images().bounds().max()[d]) < tol;
+        for (const vector& S : images().shifts())
         {
             if (mag(S[d]) > tol && mag(mag(S[d]) - span) > tol) wraps = false;
         }
@@ -48,7 +48,7 @@ unsigned Foam::sphereWalkVoidFraction::gridWrapsSphere
     if (!gridWraps_ || centreCell < 0) return 0;
     // a sphere narrower than every cell crosses at most one plane per
     // direction, and its pieces fit: the split cannot fail
-    if (2*R <= locator_.minWidth()) return gridWraps_;
+    if (2*R <= locator().minWidth()) return gridWraps_;
     bool cut[3];
     scalar offset[3];
     label low[3], high[3];
@@ -65,7 +65,7 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     const bool wrap
 )
 {
-    if (twoD_) return false;     // the one-go split is for spheres
+    if (twoDimensional()) return false;     // the one-go split is for spheres
     bool cut[3];
     scalar offset[3];
     label low[3], high[3];
@@ -76,7 +76,7 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
         // whole in one cell: no volume to compute
         if (low[0] >= 0 && low[1] >= 0 && low[2] >= 0)
         {
-            weights_.append(locator_.gridCell(low[0], low[1], low[2]), 1.0);
+            rows().append(locator().gridCell(low[0], low[1], low[2]), 1.0);
         }
         return true;
     }
@@ -87,7 +87,7 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     {
         if (volume > 0 && i >= 0 && j >= 0 && k >= 0)
         {
-            weights_.append(locator_.gridCell(i, j, k), volume*perVolume);
+            rows().append(locator().gridCell(i, j, k), volume*perVolume);
         }
     };
     scalar piece[8];
@@ -120,7 +120,7 @@ void Foam::sphereWalkVoidFraction::appendVolumes(const scalar R)
     const scalar Vp = particleVolume(R);
     forAll(cells_, k)
     {
-        weights_.append(cells_[k], volumes_[k]/Vp);
+        rows().append(cells_[k], volumes_[k]/Vp);
     }
 }
 
@@ -137,21 +137,21 @@ void Foam::sphereWalkVoidFraction::appendLatticeSplit
     cells_.clear();
     counts_.clear();
     label total = 0;
-    if (locator_.isTensorGrid())
+    if (locator().isTensorGrid())
     {
         // the cells the sphere's box covers, by index: no walk
         total = label(table ? table->total() : sphereOverlap::latticeCount({c.x(), c.y(), c.z()}, R, L));
         label first[3], last[3];
         for (direction d = 0; d < 3; ++d)
         {
-            const scalarList& g = locator_.gridPlanes(d);
+            const scalarList& g = locator().gridPlanes(d);
             if (c[d] + R < g.first() || c[d] - R > g.last()) return;
-            first[d] = locator_.interval(d, max(c[d] - R, g.first()));
-            last[d] = locator_.interval(d, min(c[d] + R, g.last()));
+            first[d] = locator().interval(d, max(c[d] - R, g.first()));
+            last[d] = locator().interval(d, min(c[d] + R, g.last()));
         }
-        const scalarList& gx = locator_.gridPlanes(0);
-        const scalarList& gy = locator_.gridPlanes(1);
-        const scalarList& gz = locator_.gridPlanes(2);
+        const scalarList& gx = locator().gridPlanes(0);
+        const scalarList& gy = locator().gridPlanes(1);
+        const scalarList& gz = locator().gridPlanes(2);
         const sphereOverlap::vec3 c3{c.x(), c.y(), c.z()};
         for (label k = first[2]; k <= last[2]; ++k)
         for (label j = first[1]; j <= last[1]; ++j)
@@ -161,7 +161,7 @@ void Foam::sphereWalkVoidFraction::appendLatticeSplit
             const long n = table ? table->count(c3, R, lo, hi) : sphereOverlap::latticeCount(c3, R, L, lo, hi);
             if (n)
             {
-                cells_.append(locator_.gridCell(i, j, k));
+                cells_.append(locator().gridCell(i, j, k));
                 counts_.append(label(n));
             }
         }
@@ -172,11 +172,11 @@ void Foam::sphereWalkVoidFraction::appendLatticeSplit
     }
     if (total == 0)
     {
-        if (centreCell >= 0) weights_.append(centreCell, 1.0);
+        if (centreCell >= 0) rows().append(centreCell, 1.0);
         return;
     }
     forAll(cells_, k)
     {
-        weights_.append(cells_[k], scalar(counts_[k])/total);
+        rows().append(cells_[k], scalar(counts_[k])/total);
     }
 }

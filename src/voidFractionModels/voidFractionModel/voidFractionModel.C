@@ -5,7 +5,6 @@
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
 #include "voidFractionModel.H"
-#include "vector2D.H"
 #include "mathematicalConstants.H"
 #include "zeroGradientFvPatchFields.H"
 #include "UIndirectList.H"
@@ -33,7 +32,7 @@ Foam::voidFractionModel::voidFractionModel
     emptyDir_(0),
     slabMid_(0),
     thickness_(0),
-    globalBounds_(mesh.bounds()),
+    images_(mesh),
     nParticles_(0),
     solid_(mesh.nCells(), 0),
     voidFraction_
@@ -78,43 +77,20 @@ Foam::voidFractionModel::voidFractionModel
         Info<< "voidFractionModel: 2D, particles are disks through the slab of thickness "
             << thickness_ << " m normal to " << vector::componentNames[emptyDir_] << endl;
     }
-    collectPeriodicShifts();
 }
 
 
 Foam::label Foam::voidFractionModel::collectStatistics(const particleData& particles)
 {
     // per-particle sums over the holders; each particle is added once
-    const label n = particles.size();
-    scalarField& fractionSum = fractionSum_;
     scalarField& found = centreHolders_;
-    found.setSize(n);
+    found.setSize(particles.size());
     forAll(found, p) found[p] = (centreCells_[p] >= 0);
-    combineSums(fractionSum, found);
-
-    // counts travel as scalars: exact far beyond any particle count
-    enum { kNParticles, kNOutside, kNCut, kParticleVolume, kMeshedVolume, kSolid, kNOver, kNSums };
-    scalarField sums(kNSums, Zero);
-    for (label p = 0; p < n; ++p)
-    {
-        if (!holders_.counted(p)) continue;
-        sums[kNParticles] += 1;
-        const scalar Vp = particleVolumes_[p];
-        sums[kParticleVolume] += Vp;
-        sums[kMeshedVolume] += fractionSum[p]*Vp;
-        if (found[p] == 0) sums[kNOutside] += 1;
-        else if (fractionSum[p] < 1 - 1e-9) sums[kNCut] += 1;
-    }
-    sums[kSolid] = sum(solid_);
-    sums[kNOver] = limiter_.nOverLimit(solid_);
-    reduce(sums, sumOp<scalarField>());
-    stats_.nParticles = label(sums[kNParticles]);
-    stats_.nOutside = label(sums[kNOutside]);
-    stats_.nCut = label(sums[kNCut]);
-    stats_.particleVolume = sums[kParticleVolume];
-    stats_.meshedVolume = sums[kMeshedVolume];
-    stats_.solidVolume = sums[kSolid];
-    return label(sums[kNOver]);
+    combineSums(fractionSum_, found);
+    return stats_.collect
+    (
+        fractionSum_, found, particleVolumes_, holders_, solid_, limiter_.nOverLimit(solid_)
+    );
 }
 
 
@@ -154,9 +130,10 @@ void Foam::voidFractionModel::computeRows
     // without periodic images the particles are the entries (no copy)
     const label n = x0.size();
     nParticles_ = n;
-    const bool periodic = periodicShifts_.size() && makeImages(x0, r0, centres);
-    const UList<point>& x = periodic ? static_cast<const UList<point>&>(entries_) : x0;
-    const UList<scalar>& r = periodic ? static_cast<const UList<scalar>&>(entryRadii_) : r0;
+    const bool periodic =
+        images_.shifts().size() && images_.make(x0, r0, centres, imageRules{*this});
+    const UList<point>& x = periodic ? images_.entries() : x0;
+    const UList<scalar>& r = periodic ? images_.radii() : r0;
 
     // images lie outside the mesh unless a particle is outside it
     centreCells_.setSize(x.size());
@@ -164,9 +141,8 @@ void Foam::voidFractionModel::computeRows
     {
         forAll(x, i)
         {
-            const label p = parent_[i];
-            centreCells_[i] = (i == firstEntry_[p]) ? centres[p]
-              : globalBounds_.contains(x[i]) ? locator_.findCell(x[i]) : -1;
+            centreCells_[i] = images_.isParticle(i) ? centres[images_.parent(i)]
+              : images_.bounds().contains(x[i]) ? locator_.findCell(x[i]) : -1;
         }
     }
     else
@@ -182,7 +158,7 @@ void Foam::voidFractionModel::computeRows
             << type() << " produced weights for " << weights_.nParticles()
             << " of " << x.size() << " particles and images" << abort(FatalError);
     }
-    if (x.size() > n) weights_.joinRows(firstEntry_);
+    if (x.size() > n) weights_.joinRows(images_.firstEntry());
 }
 
 
@@ -220,7 +196,7 @@ void Foam::voidFractionModel::update
     computeRows(x0, r, hints_);
     centreCells_ = hints_;
 
-    stats_ = statistics();
+    stats_ = mappingStatistics();
     if (!rowsSpread_) spreadVolumes();
     const label nOver = collectStatistics(particles);
     stats_.movedVolume = limiter_.limit(solid_, nOver, stats_.solidVolume);
@@ -236,10 +212,7 @@ void Foam::voidFractionModel::update
     voidFraction_.correctBoundaryConditions();
     // the limiter moves volume; the total it keeps is what is reported
     if (nOver) stats_.solidVolume = gSum(solid_);
-    vector2D range(min(alpha), -max(alpha));
-    reduce(range, minOp<vector2D>());
-    stats_.minVoidFraction = range.x();
-    stats_.maxVoidFraction = -range.y();
+    stats_.setRange(alpha);
 }
 
 
@@ -293,26 +266,4 @@ Foam::scalar Foam::voidFractionModel::positiveCoeff
             << " in " << coeffs_.name() << exit(FatalIOError);
     }
     return value;
-}
-
-
-void Foam::voidFractionModel::report(Ostream& os) const
-{
-    const statistics& s = stats_;
-    // read by a person: 4 significant digits (the conservation error is
-    // relative, so it keeps its meaning)
-    const int precision = os.precision(4);
-    os  << type() << ": " << s.nParticles << " particles, volume "
-        << s.particleVolume << nl
-        << "    solid volume in the field " << s.solidVolume
-        << ", of the particles inside the mesh " << s.meshedVolume
-        << ", conservation error "
-        << mag(s.solidVolume - s.meshedVolume)/max(s.meshedVolume, VSMALL) << nl
-        << "    particles with centre outside the mesh " << s.nOutside
-        << ", reaching outside " << s.nCut
-        << ", volume outside " << s.particleVolume - s.meshedVolume << nl
-        << "    void fraction min " << s.minVoidFraction
-        << " max " << s.maxVoidFraction
-        << ", volume moved by alphaMin " << s.movedVolume << endl;
-    os.precision(precision);
 }

@@ -22,8 +22,8 @@ Description
 
 #include "fvCFD.H"
 #include "solidFractionLimiter.H"
-#include "OFstream.H"
 #include "testHarness.H"
+#include "blockMeshCase.H"
 
 using namespace Foam;
 using testHarness::near;
@@ -32,27 +32,6 @@ namespace
 {
     const scalar cellV = 1e-9;         // 1 mm cubes
     const scalar alphaMin = 0.4;       // at most 0.6 nL of solid per cell
-
-    void writeCase(const fileName& dir)
-    {
-        mkDir(dir/"system");
-        mkDir(dir/"constant");
-        const char* header = "FoamFile { version 2.0; format ascii; class dictionary; ";
-        OFstream(dir/"system"/"controlDict")()
-            << header << "object controlDict; }\n"
-            << "application none; startFrom startTime; startTime 0; stopAt endTime;"
-            << " endTime 1; deltaT 1; writeControl timeStep; writeInterval 1;\n";
-        OFstream(dir/"system"/"blockMeshDict")()
-            << header << "object blockMeshDict; }\nscale 0.001;\n"
-            << "vertices ((0 0 0) (6 0 0) (6 1 0) (0 1 0) (0 0 1) (6 0 1) (6 1 1) (0 1 1));\n"
-            << "blocks (hex (0 1 2 3 4 5 6 7) (6 1 1) simpleGrading (1 1 1));\n"
-            << "boundary (walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4)"
-            << " (3 7 6 2) (0 3 2 1) (4 5 6 7)); });\n";
-        OFstream(dir/"system"/"fvSchemes")() << header << "object fvSchemes; }\n"
-            << "ddtSchemes {} gradSchemes {} divSchemes {} laplacianSchemes {}"
-            << " interpolationSchemes {} snGradSchemes {}\n";
-        OFstream(dir/"system"/"fvSolution")() << header << "object fvSolution; }\n";
-    }
 
     void checkKept(const char* what, const scalarField& solid, const scalar total)
     {
@@ -65,16 +44,16 @@ namespace
 
 int main(int argc, char *argv[])
 {
-    const fileName root(getEnv("VFM_PROJECT_DIR")/"build"/"unit");
-    const fileName caseDir(root/"solidFractionLimiterCase");
-    if (isDir(caseDir)) rmDir(caseDir);
-    writeCase(caseDir);
-    if (Foam::system("blockMesh -case " + caseDir + " > " + caseDir/"log.blockMesh" + " 2>&1") != 0)
-    {
-        FatalErrorInFunction << "blockMesh failed in " << caseDir << exit(FatalError);
-    }
-    Time runTime(Time::controlDictName, root, "solidFractionLimiterCase");
-    fvMesh mesh(IOobject(fvMesh::defaultRegion, runTime.timeName(), runTime, IOobject::MUST_READ));
+    const testHarness::blockMeshCase unitCase
+    (
+        "solidFractionLimiterCase",
+        "scale 0.001;\n"
+        "vertices ((0 0 0) (6 0 0) (6 1 0) (0 1 0) (0 0 1) (6 0 1) (6 1 1) (0 1 1));\n"
+        "blocks (hex (0 1 2 3 4 5 6 7) (6 1 1) simpleGrading (1 1 1));\n"
+        "boundary (walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4)"
+        " (3 7 6 2) (0 3 2 1) (4 5 6 7)); });"
+    );
+    const fvMesh& mesh = unitCase.mesh();
     const solidFractionLimiter limiter(mesh, alphaMin);
 
     // cells are numbered along x

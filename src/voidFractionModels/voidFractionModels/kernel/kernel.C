@@ -4,7 +4,7 @@
     License: GNU General Public License v3.0 or later (see LICENSE)
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
-#include "kernelVoidFraction.H"
+#include "kernel.H"
 #include "addToRunTimeSelectionTable.H"
 #include "emptyPolyPatch.H"
 #include "expBatch.H"
@@ -104,13 +104,13 @@ Foam::voidFractionModels::kernel::kernel
     uniform_(false),
     factorised_(false)
 {
-    if (coeffs_.found("bandwidth") && coeffs_.found("bandwidthOverCellSize"))
+    if (coeffs().found("bandwidth") && coeffs().found("bandwidthOverCellSize"))
     {
-        FatalIOErrorInFunction(coeffs_)
-            << "give bandwidth or bandwidthOverCellSize in " << coeffs_.name()
+        FatalIOErrorInFunction(coeffs())
+            << "give bandwidth or bandwidthOverCellSize in " << coeffs().name()
             << ", not both" << exit(FatalIOError);
     }
-    if (coeffs_.found("bandwidth"))
+    if (coeffs().found("bandwidth"))
     {
         bandwidth_ = positiveCoeff("bandwidth");
     }
@@ -122,22 +122,22 @@ Foam::voidFractionModels::kernel::kernel
     cellSize_.setSize(mesh.nCells());
     forAll(cellSize_, celli) cellSize_[celli] = cellSize(celli);
     maxCellSize_ = returnReduce(max(cellSize_), maxOp<scalar>());
-    collectWalls(mesh, coeffs_.lookupOrDefault<bool>("reflectAtWalls", true));
-    uniform_ = locator_.isTensorGrid()
-     && locator_.invSpacing(0) > 0 && locator_.invSpacing(1) > 0 && locator_.invSpacing(2) > 0;
+    collectWalls(mesh, coeffs().lookupOrDefault<bool>("reflectAtWalls", true));
+    uniform_ = locator().isTensorGrid()
+     && locator().invSpacing(0) > 0 && locator().invSpacing(1) > 0 && locator().invSpacing(2) > 0;
     // 4 cutoff^2 within prepareBlock's clamp
     factorised_ = uniform_ && cutoff_ <= 6;
     if (uniform_)
     {
-        for (direction d = 0; d < 3; ++d) spacing_[d] = 1/locator_.invSpacing(d);
+        for (direction d = 0; d < 3; ++d) spacing_[d] = 1/locator().invSpacing(d);
     }
-    if (locator_.isTensorGrid())
+    if (locator().isTensorGrid())
     {
         for (direction d = 0; d < 3; ++d)
         {
             // three cells more beyond the last: a fixed window of four
             // reads them (and never uses them) without a bound check
-            const scalarList& g = locator_.gridPlanes(d);
+            const scalarList& g = locator().gridPlanes(d);
             const label nCells = g.size() - 1;
             gridCentres_[d].setSize(nCells + 3);
             gridWidths_[d].setSize(nCells + 3);
@@ -159,11 +159,13 @@ Foam::scalar Foam::voidFractionModels::kernel::imageReach(const scalar) const
 }
 
 
-void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bool reflect)
+void Foam::voidFractionModels::kernel::collectWallPlanes
+(
+    const fvMesh& mesh,
+    List<vector>& wallNormals,
+    List<scalar>& wallOffsets
+)
 {
-    // no wall: no particle has images
-    nearWalls_.setSize(mesh.nCells(), 0);
-    if (!reflect) return;
     const vectorField& Sf = mesh.faceAreas();
     const vectorField& Cf = mesh.faceCentres();
     const scalar tol = 1e-9*mesh.bounds().mag();
@@ -221,6 +223,24 @@ void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bo
         }
     );
 
+    wallNormals.setSize(order.size());
+    wallOffsets.setSize(order.size());
+    forAll(order, i)
+    {
+        wallNormals[i] = normals[order[i]];
+        wallOffsets[i] = offsets[order[i]];
+    }
+}
+
+
+void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bool reflect)
+{
+    // no wall: no particle has images
+    nearWalls_.setSize(mesh.nCells(), 0);
+    if (!reflect) return;
+    List<vector> normals;
+    List<scalar> offsets;
+    collectWallPlanes(mesh, normals, offsets);
     if (normals.size() > 64)
     {
         WarningInFunction
@@ -231,15 +251,21 @@ void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bo
     walls_.setSize(normals.size());
     forAll(walls_, i)
     {
-        const vector& n = normals[order[i]];
+        const vector& n = normals[i];
         label axis = -1;
         for (direction d = 0; d < 3; ++d)
         {
             if (mag(n[(d + 1) % 3]) < 1e-9 && mag(n[(d + 2) % 3]) < 1e-9) axis = d;
         }
-        walls_[i] = wallPlane{n, offsets[order[i]], axis};
+        walls_[i] = wallPlane{n, offsets[i], axis};
     }
 
+    markCellsNearWalls(mesh);
+}
+
+
+void Foam::voidFractionModels::kernel::markCellsNearWalls(const fvMesh& mesh)
+{
     const pointField& points = mesh.points();
     const labelListList& cellPoints = mesh.cellPoints();
     forAll(nearWalls_, celli)
@@ -259,33 +285,33 @@ void Foam::voidFractionModels::kernel::collectWalls(const fvMesh& mesh, const bo
 }
 
 
-void Foam::voidFractionModels::kernel::findImages
+void Foam::voidFractionModels::kernel::findWallMirrors
 (
     const point& c,
     const label celli,
     const scalar rc
 )
 {
-    images_.clear();
-    images_.append(c);
-    imageWall_.clear();
-    imageWall_.append(-1);
+    wallMirrors_.clear();
+    wallMirrors_.append(c);
+    lastMirrorWall_.clear();
+    lastMirrorWall_.append(-1);
     forEachNearWall
     (
         c, celli, rc,
         [&](const wallPlane& P, const label w)
         {
-            const label m = images_.size();
+            const label m = wallMirrors_.size();
             for (label i = 0; i < m; ++i)
             {
                 // no image of an image across the opposite wall of a slab
-                if (imageWall_[i] >= 0 && (walls_[imageWall_[i]].normal & P.normal) < -0.5)
+                if (lastMirrorWall_[i] >= 0 && (walls_[lastMirrorWall_[i]].normal & P.normal) < -0.5)
                 {
                     continue;
                 }
-                const point x = images_[i];
-                images_.append(x - 2*((P.normal & x) - P.offset)*P.normal);
-                imageWall_.append(w);
+                const point x = wallMirrors_[i];
+                wallMirrors_.append(x - 2*((P.normal & x) - P.offset)*P.normal);
+                lastMirrorWall_.append(w);
             }
         }
     );
@@ -322,22 +348,22 @@ Foam::label Foam::voidFractionModels::kernel::axisWindow
     const scalar rc
 )
 {
-    const scalarList& g = locator_.gridPlanes(d);
+    const scalarList& g = locator().gridPlanes(d);
     if (x + rc < g.first() || x - rc > g.last())
     {
         firstIndex_[d] = 0;
         return 0;
     }
-    const scalar inv = locator_.invSpacing(d);
+    const scalar inv = locator().invSpacing(d);
     if (inv > 0) return uniformWindow(g, inv, x, rc, firstIndex_[d]);
 
     // the intervals holding the ends of the reach, then the centres
     const scalarList& xc = gridCentres_[d];
     const scalar from = max(x - rc, g.first());
     const scalar to = min(x + rc, g.last());
-    label first = locator_.interval(d, from);
+    label first = locator().interval(d, from);
     first += (xc[first] < from);
-    label end = locator_.interval(d, to) + 1;
+    label end = locator().interval(d, to) + 1;
     end -= (xc[end - 1] > to);
     firstIndex_[d] = first;
     return max(end - first, label(0));
@@ -401,8 +427,8 @@ inline void Foam::voidFractionModels::kernel::finishRow
 {
     // nothing positive here: the row is the centre cell alone, where the
     // fallback of distribute finds it
-    weights_.truncateEntries(sum > 0 ? k0 + m : k0);
-    if (sum == 0 && centreCells_[p] >= 0) weights_.append(centreCells_[p], 0);
+    rows().truncateEntries(sum > 0 ? k0 + m : k0);
+    if (sum == 0 && centreCells()[p] >= 0) rows().append(centreCells()[p], 0);
     sums_[p] = sum;
 }
 
@@ -431,13 +457,13 @@ void Foam::voidFractionModels::kernel::prepareBlock
         const point& c = x[p];
         const scalar rc = cutoff_*b_[p];
         const scalar invB2 = 1/sqr(b_[p]);
-        findMirrors(c, centreCells_[p], rc);
+        findMirrors(c, centreCells()[p], rc);
         const scalar* xc[3];
         bool fits = true;
         for (direction d = 0; d < 3; ++d)
         {
-            const scalarList& g = locator_.gridPlanes(d);
-            W.n[d] = uniformWindow(g, locator_.invSpacing(d), c[d], rc, W.first[d]);
+            const scalarList& g = locator().gridPlanes(d);
+            W.n[d] = uniformWindow(g, locator().invSpacing(d), c[d], rc, W.first[d]);
             fits = fits && W.n[d] <= 4;
             // an empty window beyond the grid: read its last cell and the
             // three padded ones after it, never past them
@@ -522,10 +548,10 @@ bool Foam::voidFractionModels::kernel::blockRows(const label p, const label p0)
         for (label k = 0; k < 4; ++k) f[k] *= h[k];
     }
 
-    const label k0 = weights_.extend(W.n[0]*W.n[1]*W.n[2]);
+    const label k0 = rows().extend(W.n[0]*W.n[1]*W.n[2]);
     scalar sum = 0;
-    label* cells = weights_.cellsData() + k0;
-    scalar* fractions = weights_.fractionsData() + k0;
+    label* cells = rows().cellsData() + k0;
+    scalar* fractions = rows().fractionsData() + k0;
     const scalar* dist = W.dist;
     const scalar rc2 = sqr(W.rc);
 
@@ -535,7 +561,7 @@ bool Foam::voidFractionModels::kernel::blockRows(const label p, const label p0)
     #define ROWS(NX, NY, NZ)                                                 \
         ballRows<NX, NY, NZ>                                                 \
         (                                                                    \
-            locator_, W.first, W.n, e, e + 4, e + 8,                         \
+            locator(), W.first, W.n, e, e + 4, e + 8,                         \
             dist, dist + 4, dist + 8, rc2, cells, fractions, sum             \
         )
     const unsigned twos = (W.n[0] == 2) | (W.n[1] == 2) << 1 | (W.n[2] == 2) << 2;
@@ -573,14 +599,14 @@ void Foam::voidFractionModels::kernel::gridWeights
     const label first[3] = {firstIndex_[0], firstIndex_[1], firstIndex_[2]};
 
     // room for the whole box of cells; the ball keeps about half of it
-    const label k0 = weights_.extend(n[0]*n[1]*n[2]);
+    const label k0 = rows().extend(n[0]*n[1]*n[2]);
     scalar sum = 0;
     const label m = ballRows<>
     (
-        locator_, first, n,
+        locator(), first, n,
         factor_[0].cdata(), factor_[1].cdata(), factor_[2].cdata(),
         distSqr_[0].cdata(), distSqr_[1].cdata(), distSqr_[2].cdata(), sqr(rc),
-        weights_.cellsData() + k0, weights_.fractionsData() + k0, sum
+        rows().cellsData() + k0, rows().fractionsData() + k0, sum
     );
     finishRow(p, k0, m, sum);
 }
@@ -594,11 +620,11 @@ void Foam::voidFractionModels::kernel::walkWeights
     const scalar rc
 )
 {
-    const label seed = centreCells_[p];
-    const label k0 = weights_.size();
-    if (seed >= 0) weights_.append(seed, 0);
-    const scalarField& V = mesh_.V();
-    const vectorField& C = mesh_.C();
+    const label seed = centreCells()[p];
+    const label k0 = rows().size();
+    if (seed >= 0) rows().append(seed, 0);
+    const scalarField& V = mesh().V();
+    const vectorField& C = mesh().C();
     const scalar rc2 = sqr(rc);
     const scalar invB2 = 1/sqr(b);
     scalar sum = 0;
@@ -610,14 +636,14 @@ void Foam::voidFractionModels::kernel::walkWeights
             const point& x = C[celli];
             if (magSqr(x - c) > rc2) return true;
             scalar w = 0;
-            for (const point& image : images_)
+            for (const point& mirror : wallMirrors_)
             {
-                w += exp(-magSqr(x - image)*invB2);
+                w += exp(-magSqr(x - mirror)*invB2);
             }
             w *= V[celli];
             sum += w;
-            if (celli == seed) weights_.setFraction(k0, w);
-            else weights_.append(celli, w);
+            if (celli == seed) rows().setFraction(k0, w);
+            else rows().append(celli, w);
             return true;
         }
     );
@@ -638,7 +664,7 @@ void Foam::voidFractionModels::kernel::distribute
     sums_.setSize(n);
     forAll(x, p)
     {
-        const label seed = centreCells_[p];
+        const label seed = centreCells()[p];
         b_[p] = (seed < 0) ? 0 : cellBandwidth(seed);
     }
     combineOverGroup(b_, maxEqOp<scalar>());
@@ -649,9 +675,9 @@ void Foam::voidFractionModels::kernel::distribute
     {
         scalar s = 1;
         if (sums_[p] > 0) s = 1/sums_[p];
-        else if (centreCells_[p] >= 0) weights_.setFraction(weights_.begin(p), 1);
+        else if (centreCells()[p] >= 0) rows().setFraction(rows().begin(p), 1);
         if (spreadNow) spreadRow(p, s);
-        else if (sums_[p] > 0) weights_.scale(p, s);
+        else if (sums_[p] > 0) rows().scale(p, s);
     };
 
     // whole particles are normalised (and spread, where allowed) while
@@ -670,12 +696,12 @@ void Foam::voidFractionModels::kernel::distribute
             if (b_[p] > 0 && !(uniform_ && blockRows(p, p0)))
             {
                 const scalar rc = cutoff_*b_[p];
-                if (locator_.isTensorGrid()) findMirrors(x[p], centreCells_[p], rc);
-                else findImages(x[p], centreCells_[p], rc);
-                if (locator_.isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
+                if (locator().isTensorGrid()) findMirrors(x[p], centreCells()[p], rc);
+                else findWallMirrors(x[p], centreCells()[p], rc);
+                if (locator().isTensorGrid()) gridWeights(p, x[p], b_[p], rc);
                 else walkWeights(p, x[p], b_[p], rc);
             }
-            weights_.endParticle();
+            rows().endParticle();
             if (whole) normalise(p, spread);
         }
     }

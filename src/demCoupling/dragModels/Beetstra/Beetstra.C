@@ -4,7 +4,7 @@
     License: GNU General Public License v3.0 or later (see LICENSE)
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
-#include "BeetstraDrag.H"
+#include "Beetstra.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
 

@@ -4,7 +4,7 @@
     License: GNU General Public License v3.0 or later (see LICENSE)
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
-#include "hybridVoidFraction.H"
+#include "hybrid.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -27,18 +27,18 @@ Foam::voidFractionModels::hybrid::hybrid
     sphereWalkVoidFraction(modelType, dict, mesh),
     resolution_(label(positiveCoeff("subGridResolution", seedDefault(20, 50))))
 {
-    if (scalar(resolution_) != coeffs_.lookupOrDefault<scalar>("subGridResolution", resolution_))
+    if (scalar(resolution_) != coeffs().lookupOrDefault<scalar>("subGridResolution", resolution_))
     {
-        FatalIOErrorInFunction(coeffs_)
+        FatalIOErrorInFunction(coeffs())
             << "subGridResolution must be a whole number, got "
-            << coeffs_.lookup("subGridResolution") << " in " << coeffs_.name()
+            << coeffs().lookup("subGridResolution") << " in " << coeffs().name()
             << exit(FatalIOError);
     }
     if (resolution_ <= 128)
     {
         table_.reset
         (
-            new sphereOverlap::sphereLatticeTable(resolution_, twoD_ ? int(emptyDir_) : -1)
+            new sphereOverlap::sphereLatticeTable(resolution_, twoDimensional() ? int(emptyDirection()) : -1)
         );
     }
 }
@@ -53,27 +53,27 @@ void Foam::voidFractionModels::hybrid::distribute
     crossed_.setSize(x.size());
     forAll(x, p)
     {
-        const label seed = centreCells_[p];
+        const label seed = centreCells()[p];
         crossed_[p] =
             (seed < 0) ? -1
-          : locator_.isTensorGrid()
-          ? locator_.planesCrossed(seed, x[p], r[p], twoD_ ? label(emptyDir_) : -1)
+          : locator().isTensorGrid()
+          ? locator().planesCrossed(seed, x[p], r[p], twoDimensional() ? label(emptyDirection()) : -1)
           : overlap_.planesCrossed(seed, x[p], r[p]);
     }
     combineOverGroup(crossed_, maxEqOp<label>());
 
     forAll(x, p)
     {
-        const label seed = centreCells_[p];
+        const label seed = centreCells()[p];
         const point& c = x[p];
         const scalar R = r[p];
         if (crossed_[p] == 0 && seed >= 0)
         {
-            weights_.append(seed, 1.0);
+            rows().append(seed, 1.0);
         }
         else if (crossed_[p] == 1)
         {
-            if (!(locator_.isTensorGrid() && splitOnGrid(seed, c, R, 1)))
+            if (!(locator().isTensorGrid() && splitOnGrid(seed, c, R, 1)))
             {
                 exactVolumes(seed, c, R);
                 appendVolumes(R);
@@ -83,7 +83,7 @@ void Foam::voidFractionModels::hybrid::distribute
         {
             // 2D: one layer through the centre
             vector h = vector::one*2*R/resolution_;
-            if (twoD_) h[emptyDir_] = 2*R;
+            if (twoDimensional()) h[emptyDirection()] = 2*R;
             const sphereOverlap::lattice L{{c.x() - R, c.y() - R, c.z() - R}, {h.x(), h.y(), h.z()}};
             appendLatticeSplit(seed, c, R, L, table_.get());
         }

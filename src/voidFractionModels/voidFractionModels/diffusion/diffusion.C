@@ -4,7 +4,7 @@
     License: GNU General Public License v3.0 or later (see LICENSE)
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
-#include "diffusionVoidFraction.H"
+#include "diffusion.H"
 #include "addToRunTimeSelectionTable.H"
 #include "laplacianScheme.H"
 #include "snGradScheme.H"
@@ -65,13 +65,13 @@ Foam::voidFractionModels::diffusion::diffusion
     nSteps_(label(positiveCoeff("nSteps", 1))),
     integration_
     (
-        readChoice(coeffs_, "integration", integrationNames, integration::implicitEuler)
+        readChoice(coeffs(), "integration", integrationNames, integration::implicitEuler)
     ),
     laplacianScheme_
     (
-        coeffs_.lookupOrDefault<string>("laplacianScheme", "Gauss linear uncorrected")
+        coeffs().lookupOrDefault<string>("laplacianScheme", "Gauss linear uncorrected")
     ),
-    solverDict_(coeffs_.subOrEmptyDict("solver")),
+    solverDict_(coeffs().subOrEmptyDict("solver")),
     D_
     (
         IOobject("voidfractionDiffusivity", mesh.time().timeName(), mesh,
@@ -89,18 +89,18 @@ Foam::voidFractionModels::diffusion::diffusion
     )
 {
     fromAnalytical_ =
-        readChoice(coeffs_, "initial", initialSplitNames, initialSplit::centroid)
+        readChoice(coeffs(), "initial", initialSplitNames, initialSplit::centroid)
      == initialSplit::analytical;
-    if (scalar(nSteps_) != coeffs_.lookupOrDefault<scalar>("nSteps", 1))
+    if (scalar(nSteps_) != coeffs().lookupOrDefault<scalar>("nSteps", 1))
     {
-        FatalIOErrorInFunction(coeffs_)
-            << "nSteps must be a whole number in " << coeffs_.name()
+        FatalIOErrorInFunction(coeffs())
+            << "nSteps must be a whole number in " << coeffs().name()
             << exit(FatalIOError);
     }
-    if (coeffs_.found("bandwidth") && coeffs_.found("coefficient"))
+    if (coeffs().found("bandwidth") && coeffs().found("coefficient"))
     {
-        FatalIOErrorInFunction(coeffs_)
-            << "give bandwidth or coefficient in " << coeffs_.name()
+        FatalIOErrorInFunction(coeffs())
+            << "give bandwidth or coefficient in " << coeffs().name()
             << ", not both" << exit(FatalIOError);
     }
     if (solverDict_.empty()) solverDict_ = defaultSolver();
@@ -112,7 +112,7 @@ Foam::voidFractionModels::diffusion::diffusion
 
 void Foam::voidFractionModels::diffusion::readDiffusivity()
 {
-    if (coeffs_.found("bandwidth"))
+    if (coeffs().found("bandwidth"))
     {
         D_ = dimensionedScalar("D", dimViscosity, sqr(positiveCoeff("bandwidth"))/4);
     }
@@ -121,9 +121,9 @@ void Foam::voidFractionModels::diffusion::readDiffusivity()
         const scalar a = positiveCoeff("coefficient", seedDefault(0.12, 0.17));
         volScalarField D
         (
-            IOobject("D", mesh_.time().timeName(), mesh_,
+            IOobject("D", mesh().time().timeName(), mesh(),
                      IOobject::NO_READ, IOobject::NO_WRITE, false),
-            mesh_,
+            mesh(),
             dimensionedScalar(dimViscosity, Zero),
             zeroGradientFvPatchScalarField::typeName
         );
@@ -147,9 +147,9 @@ void Foam::voidFractionModels::diffusion::buildLaplacianScheme()
      || !fv::snGradScheme<scalar>::MeshConstructorTablePtr_->found(snGrad)
     )
     {
-        FatalIOErrorInFunction(coeffs_)
+        FatalIOErrorInFunction(coeffs())
             << "laplacianScheme \"" << laplacianScheme_.c_str() << "\" in "
-            << coeffs_.name() << " is not Gauss <interpolation> <snGrad>;"
+            << coeffs().name() << " is not Gauss <interpolation> <snGrad>;"
             << " valid interpolations: "
             << surfaceInterpolationScheme<scalar>::MeshConstructorTablePtr_->sortedToc()
             << ", valid snGrad schemes: "
@@ -157,25 +157,25 @@ void Foam::voidFractionModels::diffusion::buildLaplacianScheme()
             << exit(FatalIOError);
     }
     IStringStream schemeStream(laplacianScheme_);
-    scheme_ = fv::laplacianScheme<scalar, scalar>::New(mesh_, schemeStream);
+    scheme_ = fv::laplacianScheme<scalar, scalar>::New(mesh(), schemeStream);
 }
 
 
 void Foam::voidFractionModels::diffusion::checkExplicitStability() const
 {
-    surfaceScalarField transfer(D_*mesh_.magSf()*mesh_.nonOrthDeltaCoeffs()/nSteps_);
+    surfaceScalarField transfer(D_*mesh().magSf()*mesh().nonOrthDeltaCoeffs()/nSteps_);
     // walls carry no flux: only coupled patches pass volume on
     for (fvsPatchScalarField& pf : transfer.boundaryFieldRef())
     {
         if (!pf.coupled()) pf = 0;
     }
-    const scalarField given(fvc::surfaceSum(transfer)().primitiveField()/mesh_.V());
+    const scalarField given(fvc::surfaceSum(transfer)().primitiveField()/mesh().V());
     const scalar worst = returnReduce(gMax(given), maxOp<scalar>());
     if (worst > 1 + 1e-12)
     {
-        FatalIOErrorInFunction(coeffs_)
+        FatalIOErrorInFunction(coeffs())
             << "integration explicit is unstable with nSteps " << nSteps_
-            << " in " << coeffs_.name() << ": a cell would give away "
+            << " in " << coeffs().name() << ": a cell would give away "
             << worst << " times what it holds in one step (at most 1; the"
             << " paper's coefficient a at most 1/(2 dim)). Use nSteps "
             << label(std::ceil(worst*nSteps_ - 1e-12))
@@ -197,7 +197,7 @@ void Foam::voidFractionModels::diffusion::distribute
 
 void Foam::voidFractionModels::diffusion::smoothVolumes(scalarField& cellVolumes)
 {
-    const scalarField& V = mesh_.V();
+    const scalarField& V = mesh().V();
     phi_.primitiveFieldRef() = cellVolumes/V;
     phi_.correctBoundaryConditions();
 

@@ -4,7 +4,7 @@
     License: GNU General Public License v3.0 or later (see LICENSE)
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
-#include "voxelVoidFraction.H"
+#include "voxel.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -33,30 +33,30 @@ Foam::voidFractionModels::voxel::voxel
     const wordList keys
     ({"voxelsPerSide", "voxelSize", "voxelsPerDiameter", "voxelsPerCell"});
     label nGiven = 0;
-    for (const word& key : keys) nGiven += coeffs_.found(key);
+    for (const word& key : keys) nGiven += coeffs().found(key);
     if (nGiven > 1)
     {
-        FatalIOErrorInFunction(coeffs_)
-            << "give one of " << keys << " in " << coeffs_.name()
+        FatalIOErrorInFunction(coeffs())
+            << "give one of " << keys << " in " << coeffs().name()
             << ", not several" << exit(FatalIOError);
     }
-    if (coeffs_.found("voxelSize"))
+    if (coeffs().found("voxelSize"))
     {
         const scalar h = positiveCoeff("voxelSize");
         voxelSize_ = vector(h, h, h);
     }
-    else if (coeffs_.found("voxelsPerDiameter"))
+    else if (coeffs().found("voxelsPerDiameter"))
     {
         voxelsPerDiameter_ = positiveCoeff("voxelsPerDiameter");
     }
-    else if (coeffs_.found("voxelsPerCell"))
+    else if (coeffs().found("voxelsPerCell"))
     {
         const scalar n = positiveCoeff("voxelsPerCell");
         if (n != std::round(n))
         {
-            FatalIOErrorInFunction(coeffs_)
+            FatalIOErrorInFunction(coeffs())
                 << "voxelsPerCell must be a whole number, got " << n
-                << " in " << coeffs_.name() << exit(FatalIOError);
+                << " in " << coeffs().name() << exit(FatalIOError);
         }
         voxelSize_ = equalBoxCellSize()/n;
         alignedWithCells_ = true;
@@ -66,7 +66,7 @@ Foam::voidFractionModels::voxel::voxel
         voxelSize_ = mesh.bounds().span()/positiveCoeff("voxelsPerSide", seedDefault(50, 300));
     }
     // 2D: one layer of voxels through the slab, centres on its mid-plane
-    if (twoD_) voxelSize_[emptyDir_] = thickness_;
+    if (twoDimensional()) voxelSize_[emptyDirection()] = slabThickness();
     Info<< "voxel: voxel size ";
     if (voxelsPerDiameter_ > 0) Info<< "diameter/" << voxelsPerDiameter_ << endl;
     else Info<< voxelSize_ << " m" << endl;
@@ -79,18 +79,18 @@ Foam::vector Foam::voidFractionModels::voxel::equalBoxCellSize() const
     // same, on every rank
     const scalar tol = 1e-9;
     vector lo(vector::max), hi(vector::min);
-    const labelListList& cellPoints = mesh_.cellPoints();
+    const labelListList& cellPoints = mesh().cellPoints();
     forAll(cellPoints, celli)
     {
-        const boundBox bb(mesh_.points(), cellPoints[celli], false);
+        const boundBox bb(mesh().points(), cellPoints[celli], false);
         const vector span = bb.span();
-        if (mag(span.x()*span.y()*span.z() - mesh_.V()[celli]) > tol*mesh_.V()[celli])
+        if (mag(span.x()*span.y()*span.z() - mesh().V()[celli]) > tol*mesh().V()[celli])
         {
-            FatalIOErrorInFunction(coeffs_)
+            FatalIOErrorInFunction(coeffs())
                 << "voxelsPerCell needs a mesh of equal axis-aligned box cells"
                 << " (a uniform blockMesh); cell " << celli << " at "
-                << mesh_.C()[celli] << " is not a box. Use voxelsPerSide,"
-                << " voxelSize or voxelsPerDiameter in " << coeffs_.name()
+                << mesh().C()[celli] << " is not a box. Use voxelsPerSide,"
+                << " voxelSize or voxelsPerDiameter in " << coeffs().name()
                 << exit(FatalIOError);
         }
         lo = min(lo, span);
@@ -100,10 +100,10 @@ Foam::vector Foam::voidFractionModels::voxel::equalBoxCellSize() const
     reduce(hi, maxOp<vector>());
     if (cmptMax(hi - lo) > tol*cmptMax(hi))
     {
-        FatalIOErrorInFunction(coeffs_)
+        FatalIOErrorInFunction(coeffs())
             << "voxelsPerCell needs cells of one size; the cell edges range"
             << " from " << lo << " to " << hi << " m. Use voxelsPerSide,"
-            << " voxelSize or voxelsPerDiameter in " << coeffs_.name()
+            << " voxelSize or voxelsPerDiameter in " << coeffs().name()
             << exit(FatalIOError);
     }
     return hi;
@@ -118,11 +118,11 @@ void Foam::voidFractionModels::voxel::distribute
 {
     forAll(x, p)
     {
-        const label seed = centreCells_[p];
+        const label seed = centreCells()[p];
         if (seed >= 0 && overlap_.holdsSphere(seed, x[p], r[p]))
         {
             // all its voxels are in this cell: the share is exactly 1
-            weights_.append(seed, 1.0);
+            rows().append(seed, 1.0);
         }
         else
         {
@@ -130,7 +130,7 @@ void Foam::voidFractionModels::voxel::distribute
             if (voxelsPerDiameter_ > 0)
             {
                 h = vector::one*2*r[p]/voxelsPerDiameter_;
-                if (twoD_) h[emptyDir_] = thickness_;
+                if (twoDimensional()) h[emptyDirection()] = slabThickness();
             }
             // shifted by irrational fractions of a voxel, so that voxel
             // centres do not fall on the faces of a regular mesh, where the
@@ -144,7 +144,7 @@ void Foam::voidFractionModels::voxel::distribute
             {
                 o += cmptMultiply(h, vector(0.1*sqrt(2.0), 0.1*sqrt(3.0), 0.1*sqrt(5.0)));
             }
-            if (twoD_) o[emptyDir_] = origin_[emptyDir_];
+            if (twoDimensional()) o[emptyDirection()] = origin_[emptyDirection()];
             const sphereOverlap::lattice L{{o.x(), o.y(), o.z()}, {h.x(), h.y(), h.z()}};
             appendLatticeSplit(seed, x[p], r[p], L);
         }

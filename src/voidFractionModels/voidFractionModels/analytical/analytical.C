@@ -4,7 +4,7 @@
     License: GNU General Public License v3.0 or later (see LICENSE)
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
-#include "analyticalVoidFraction.H"
+#include "analytical.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
 
@@ -49,7 +49,7 @@ unsigned Foam::voidFractionModels::analytical::wrappedAlways() const
 Foam::scalar Foam::voidFractionModels::analytical::wrappedRadius() const
 {
     // a sphere narrower than every cell is always split on the grid
-    return gridWraps_ ? 0.5*locator_.minWidth() : -1;
+    return gridWraps_ ? 0.5*locator().minWidth() : -1;
 }
 
 
@@ -61,14 +61,14 @@ void Foam::voidFractionModels::analytical::distribute
 {
     forAll(x, p)
     {
-        const label seed = centreCells_[p];
-        if (locator_.isTensorGrid() && splitOnGrid(seed, x[p], r[p], 3, gridWraps_ && isParticleEntry(p)))
+        const label seed = centreCells()[p];
+        if (locator().isTensorGrid() && splitOnGrid(seed, x[p], r[p], 3, gridWraps_ && isParticleEntry(p)))
         {
             // done
         }
         else if (seed >= 0 && overlap_.holdsSphere(seed, x[p], r[p]))
         {
-            weights_.append(seed, 1.0);
+            rows().append(seed, 1.0);
         }
         else
         {

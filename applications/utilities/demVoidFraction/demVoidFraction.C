@@ -94,41 +94,123 @@ namespace
         forAll(files, i) files[i] = found[i].second;
         return files;
     }
+
+    void addOptions()
+    {
+        using namespace Foam;
+        argList::addNote("Void fraction field from a LIGGGHTS dump");
+        argList::addOption
+        (
+            "dump", "file",
+            "LIGGGHTS text dump (id x y z radius), or a quoted pattern such as 'post/dump.*'"
+        );
+        argList::addOption("deltaT", "s", "DEM time step: a snapshot's time is TIMESTEP x this");
+        argList::addOption("time", "ranges", "map only the snapshots at these times, e.g. '0.1:0.5,1'");
+        argList::addBoolOption("latest", "map only the last snapshot");
+        argList::addBoolOption
+        (
+            "distribute",
+            "parallel -dump: deal the particles out to the ranks and map them through"
+            " the exchange pimpleDEMFoam uses (each rank holds only those near its cells)"
+        );
+        argList::addBoolOption
+        (
+            "liggghts",
+            "run couplingProperties' demScript in this process (LIGGGHTS as a library)"
+            " and take its particles instead of a dump"
+        );
+        argList::addOption("model", "name", "override the voidFractionModel");
+        argList::addOption("repeat", "N", "time N further calls (median)");
+        argList::addOption("name", "field", "write the field under this name");
+        argList::addOption
+        (
+            "previous", "file",
+            "map this dump first, as the step before (the cell search then starts"
+            " from each particle's cell in it)"
+        );
+    }
+
+    //- One snapshot of a dump, and the fraction of the dump read once it was
+    struct snapshot
+    {
+        Foam::label timestep;
+        Foam::particleData particles;
+        Foam::scalar read;
+    };
+
+    //- The snapshots of the dump's files in order, read ahead on demand
+    class snapshotQueue
+    {
+        const Foam::fileNameList& files_;
+        std::deque<snapshot> ahead_;
+        Foam::label nextFile_ = 0;
+        Foam::autoPtr<Foam::liggghtsDumpReader> reader_;
+
+    public:
+
+        explicit snapshotQueue(const Foam::fileNameList& files) : files_(files) {}
+
+        //- Read one more snapshot, if the files hold one
+        void readAhead()
+        {
+            using namespace Foam;
+            particleData p;
+            while (true)
+            {
+                if (!reader_.valid())
+                {
+                    if (nextFile_ == files_.size()) return;
+                    reader_.reset(new liggghtsDumpReader(files_[nextFile_++]));
+                }
+                if (reader_->read(p)) break;
+                reader_.clear();
+            }
+            const scalar read = (nextFile_ - 1 + reader_->progress())/files_.size();
+            ahead_.push_back({reader_->timestep(), std::move(p), min(max(read, scalar(0)), scalar(1))});
+        }
+
+        //- The next snapshot, reading another behind it
+        snapshot pop()
+        {
+            snapshot next(std::move(ahead_.front()));
+            ahead_.pop_front();
+            readAhead();
+            return next;
+        }
+
+        std::size_t size() const { return ahead_.size(); }
+        snapshot& front() { return ahead_.front(); }
+    };
+
+    //- The progress line of a series: snapshot, time, share of the dump
+    //  read, elapsed and an estimate of what remains
+    void printProgress
+    (
+        const Foam::label nSeen,
+        const snapshot& now,
+        const Foam::word& timeName,
+        const Foam::scalar elapsed
+    )
+    {
+        using namespace Foam;
+        const scalar done = now.read;
+        const label precision = Sout.precision(4);
+        Info<< nl << "Snapshot " << nSeen << ", TIMESTEP " << now.timestep << ", time "
+            << timeName << ": " << label(100*done + 0.5) << " % of the dump read, "
+            << elapsed << " s elapsed";
+        if (done > 0 && done < 1)
+        {
+            Info<< ", about " << elapsed*(1 - done)/done << " s left";
+        }
+        Info<< endl;
+        Sout.precision(precision);
+    }
 }
 
 
 int main(int argc, char *argv[])
 {
-    argList::addNote("Void fraction field from a LIGGGHTS dump");
-    argList::addOption
-    (
-        "dump", "file",
-        "LIGGGHTS text dump (id x y z radius), or a quoted pattern such as 'post/dump.*'"
-    );
-    argList::addOption("deltaT", "s", "DEM time step: a snapshot's time is TIMESTEP x this");
-    argList::addOption("time", "ranges", "map only the snapshots at these times, e.g. '0.1:0.5,1'");
-    argList::addBoolOption("latest", "map only the last snapshot");
-    argList::addBoolOption
-    (
-        "distribute",
-        "parallel -dump: deal the particles out to the ranks and map them through"
-        " the exchange pimpleDEMFoam uses (each rank holds only those near its cells)"
-    );
-    argList::addBoolOption
-    (
-        "liggghts",
-        "run couplingProperties' demScript in this process (LIGGGHTS as a library)"
-        " and take its particles instead of a dump"
-    );
-    argList::addOption("model", "name", "override the voidFractionModel");
-    argList::addOption("repeat", "N", "time N further calls (median)");
-    argList::addOption("name", "field", "write the field under this name");
-    argList::addOption
-    (
-        "previous", "file",
-        "map this dump first, as the step before (the cell search then starts"
-        " from each particle's cell in it)"
-    );
+    addOptions();
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -251,35 +333,11 @@ int main(int argc, char *argv[])
     );
     const bool latest = args.found("latest");
 
-    // the snapshots in order, one read ahead: a single snapshot goes into
-    // the start time, and -latest knows the last when nothing follows it
-    struct snapshot
-    {
-        label timestep;
-        particleData particles;
-        scalar read;    // fraction of the dump read once it was
-    };
-    std::deque<snapshot> ahead;
-    label nextFile = 0;
-    autoPtr<liggghtsDumpReader> reader;
-    auto readAhead = [&]()
-    {
-        particleData p;
-        while (true)
-        {
-            if (!reader.valid())
-            {
-                if (nextFile == files.size()) return;
-                reader.reset(new liggghtsDumpReader(files[nextFile++]));
-            }
-            if (reader->read(p)) break;
-            reader.clear();
-        }
-        const scalar read = (nextFile - 1 + reader->progress())/files.size();
-        ahead.push_back({reader->timestep(), std::move(p), min(max(read, scalar(0)), scalar(1))});
-    };
-    readAhead();
-    readAhead();
+    // one read ahead: a single snapshot goes into the start time, and
+    // -latest knows the last when nothing follows it
+    snapshotQueue ahead(files);
+    ahead.readAhead();
+    ahead.readAhead();
     Info<< "Read " << ahead.front().particles.size() << " particles from " << files[0];
     if (files.size() > 1) Info<< " (first of " << files.size() << " files)";
     Info<< " in " << clock.timeIncrement() << " s" << endl;
@@ -296,27 +354,14 @@ int main(int argc, char *argv[])
     label nSeen = 0, nMapped = 0;
     while (ahead.size())
     {
-        snapshot now(std::move(ahead.front()));
-        ahead.pop_front();
-        readAhead();
+        snapshot now(ahead.pop());
         ++nSeen;
         const scalar t = now.timestep*deltaT;
         if ((latest && ahead.size()) || (times.size() && !times.match(t))) continue;
         runTime.setTime(t, nSeen);
         particleData particles;
         const particleHolders holders(hold(std::move(now.particles), particles));
-        const scalar elapsed = clock.elapsedTime();
-        const scalar done = now.read;
-        const label precision = Sout.precision(4);
-        Info<< nl << "Snapshot " << nSeen << ", TIMESTEP " << now.timestep << ", time "
-            << runTime.timeName() << ": " << label(100*done + 0.5) << " % of the dump read, "
-            << elapsed << " s elapsed";
-        if (done > 0 && done < 1)
-        {
-            Info<< ", about " << elapsed*(1 - done)/done << " s left";
-        }
-        Info<< endl;
-        Sout.precision(precision);
+        printProgress(nSeen, now, runTime.timeName(), clock.elapsedTime());
         mapAndWrite(particles, holders);
         ++nMapped;
     }

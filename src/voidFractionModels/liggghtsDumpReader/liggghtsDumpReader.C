@@ -14,6 +14,11 @@
 #include <unordered_map>
 #include <vector>
 
+
+const std::vector<std::string> Foam::liggghtsDumpReader::neededColumns =
+    {"id", "x", "y", "z", "radius"};
+
+
 Foam::liggghtsDumpReader::liggghtsDumpReader(const fileName& file)
 :
     file_(file),
@@ -78,13 +83,15 @@ bool Foam::liggghtsDumpReader::nextLine(std::string& text)
 }
 
 
-bool Foam::liggghtsDumpReader::read(particleData& particles)
+bool Foam::liggghtsDumpReader::readHeader
+(
+    long& nAtoms,
+    std::vector<std::string>& columns
+)
 {
-    // the header of the next snapshot, up to its ATOMS line
     std::string text;
-    long nAtoms = -1;
+    nAtoms = -1;
     long headerLine = 0;
-    std::vector<std::string> columns;
     timestep_ = -1;
     bool atoms = false;
     while (!atoms && nextLine(text))
@@ -118,28 +125,46 @@ bool Foam::liggghtsDumpReader::read(particleData& particles)
         if (headerLine == 0) error(0, "the file is empty");
         error(headerLine, "no 'ITEM: ATOMS' section in the snapshot starting here");
     }
-    const long atomsLine = lineNo_;
-    if (nAtoms < 0) error(atomsLine, "no 'ITEM: NUMBER OF ATOMS' before the atoms");
+    if (nAtoms < 0) error(lineNo_, "no 'ITEM: NUMBER OF ATOMS' before the atoms");
+    return true;
+}
 
-    const std::vector<std::string> needed = {"id", "x", "y", "z", "radius"};
-    std::vector<int> col(needed.size(), -1);
-    for (std::size_t k = 0; k < needed.size(); ++k)
+
+std::vector<int> Foam::liggghtsDumpReader::findColumns
+(
+    const std::vector<std::string>& columns
+) const
+{
+    std::vector<int> col(neededColumns.size(), -1);
+    for (std::size_t k = 0; k < neededColumns.size(); ++k)
     {
         for (std::size_t j = 0; j < columns.size(); ++j)
         {
-            if (columns[j] == needed[k]) col[k] = int(j);
+            if (columns[j] == neededColumns[k]) col[k] = int(j);
         }
         if (col[k] < 0)
         {
-            error(atomsLine, "missing column '" + needed[k] + "' in the ATOMS header");
+            error(lineNo_, "missing column '" + neededColumns[k] + "' in the ATOMS header");
         }
     }
+    return col;
+}
+
+
+bool Foam::liggghtsDumpReader::read(particleData& particles)
+{
+    long nAtoms;
+    std::vector<std::string> columns;
+    if (!readHeader(nAtoms, columns)) return false;
+    const long atomsLine = lineNo_;
+    const std::vector<int> col = findColumns(columns);
 
     pointField positions(nAtoms);
     scalarField radii(nAtoms);
     labelList ids(nAtoms);
     std::unordered_map<label, long> idLine;
     idLine.reserve(nAtoms);
+    std::string text;
     std::vector<std::string> words;
     for (long i = 0; i < nAtoms; ++i)
     {
@@ -165,9 +190,9 @@ bool Foam::liggghtsDumpReader::read(particleData& particles)
             );
         }
         double v[5];
-        for (std::size_t k = 0; k < needed.size(); ++k)
+        for (std::size_t k = 0; k < neededColumns.size(); ++k)
         {
-            v[k] = number(words[col[k]], lineNo_, needed[k]);
+            v[k] = number(words[col[k]], lineNo_, neededColumns[k]);
         }
         if (v[4] <= 0) error(lineNo_, "radius must be positive, got " + words[col[4]]);
         if (v[0] != std::floor(v[0])) error(lineNo_, "id must be a whole number, got " + words[col[0]]);

@@ -10,26 +10,12 @@
 #include "boundBox.H"
 #include "volFields.H"
 
-Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
-:
-    mesh_(mesh),
-    cellMin_(mesh.nCells()),
-    cellMax_(mesh.nCells()),
-    isBox_(mesh.nCells(), false),
-    cellPlaneStart_(mesh.nCells() + 1, 0),
-    faceMin_(mesh.nFaces()),
-    faceMax_(mesh.nFaces()),
-    facePlanes_(mesh.nFaces()),
-    planarFace_(mesh.nFaces(), true),
-    emptyDir_(-1),
-    thickness_(0),
-    queuedAt_(mesh.nCells(), 0),
-    walkCount_(0)
+void Foam::sphereCellOverlap::measureFaces()
 {
-    const pointField& pts = mesh.points();
-    const faceList& faces = mesh.faces();
-    const vectorField& Sf = mesh.faceAreas();
-    const vectorField& Cf = mesh.faceCentres();
+    const pointField& pts = mesh_.points();
+    const faceList& faces = mesh_.faces();
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
 
     forAll(faces, facei)
     {
@@ -48,17 +34,23 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
             }
         }
     }
+}
 
+
+void Foam::sphereCellOverlap::measureCells()
+{
+    const pointField& pts = mesh_.points();
+    const faceList& faces = mesh_.faces();
     DynamicList<cellPlane> planes;
-    forAll(mesh.cells(), celli)
+    forAll(mesh_.cells(), celli)
     {
-        const cell& c = mesh.cells()[celli];
+        const cell& c = mesh_.cells()[celli];
         const boundBox bb(c.points(faces, pts), false);
         cellMin_[celli] = toVec3(bb.min());
         cellMax_[celli] = toVec3(bb.max());
         isBox_[celli] =
             c.size() == 6
-         && mag(bb.volume() - mesh.V()[celli]) < 1e-10*mesh.V()[celli];
+         && mag(bb.volume() - mesh_.V()[celli]) < 1e-10*mesh_.V()[celli];
         cellPlaneStart_[celli + 1] = cellPlaneStart_[celli];
         if (isBox_[celli]) continue;
         // the outward planes, kept when the cell is convex: every point of
@@ -69,7 +61,7 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
         bool convex = true;
         for (const label facei : c)
         {
-            const scalar sign = mesh.faceOwner()[facei] == celli ? 1 : -1;
+            const scalar sign = mesh_.faceOwner()[facei] == celli ? 1 : -1;
             const facePlane& fp = facePlanes_[facei];
             const cellPlane plane{sign*fp.normal, sign*fp.offset, facei};
             convex = convex && planarFace_[facei];
@@ -83,9 +75,14 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
         cellPlaneStart_[celli + 1] = planes.size();
     }
     cellPlanes_.transfer(planes);
+}
 
+
+void Foam::sphereCellOverlap::buildBoundaryTree()
+{
+    const pointField& pts = mesh_.points();
     DynamicList<label> bFaces;
-    for (const polyPatch& pp : mesh.boundaryMesh())
+    for (const polyPatch& pp : mesh_.boundaryMesh())
     {
         if (!isA<emptyPolyPatch>(pp))
         {
@@ -101,11 +98,33 @@ Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
         (
             new indexedOctree<treeDataFace>
             (
-                treeDataFace(true, mesh, boundaryFaces_),
+                treeDataFace(true, mesh_, boundaryFaces_),
                 bb, 8, 10.0, 3.0
             )
         );
     }
+}
+
+
+Foam::sphereCellOverlap::sphereCellOverlap(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    cellMin_(mesh.nCells()),
+    cellMax_(mesh.nCells()),
+    isBox_(mesh.nCells(), false),
+    cellPlaneStart_(mesh.nCells() + 1, 0),
+    faceMin_(mesh.nFaces()),
+    faceMax_(mesh.nFaces()),
+    facePlanes_(mesh.nFaces()),
+    planarFace_(mesh.nFaces(), true),
+    emptyDir_(-1),
+    thickness_(0),
+    queuedAt_(mesh.nCells(), 0),
+    walkCount_(0)
+{
+    measureFaces();
+    measureCells();
+    buildBoundaryTree();
     markExitFaces();
 }
 

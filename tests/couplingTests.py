@@ -441,9 +441,9 @@ def test_parcels():
 
 
 def test_mueller_bed():
-    print("muellerBed tutorial: 9,240 poppy seeds in a 44 x 10 mm bed with walls, U = 0.9 m/s, 0.3 s")
+    print("muellerBed tutorial: 9,240 poppy seeds in a 44 x 10 mm bed with walls, U = 0.9 m/s, 0.2 s")
     case = copy_tutorial("muellerBed", "muellerBed")
-    rc, out = sh("./Allrun analytical 0.9 4 0.3", case, check=False)
+    rc, out = sh("./Allrun analytical 0.9 4 0.2", case, check=False)
     check("Allrun completed", rc == 0, out[-1500:] if rc else "")
     print("\n".join("    " + l for l in out.splitlines() if l.startswith("    ") and "t = " not in l))
     log = os.path.join(case, "log.pimpleDEMFoam")

@@ -153,7 +153,7 @@ Foam::voidFractionModels::kernel::kernel
 }
 
 
-Foam::scalar Foam::voidFractionModels::kernel::imageReach(const scalar) const
+Foam::scalar Foam::voidFractionModels::kernel::reach(const scalar) const
 {
     return cutoff_*(bandwidth_ > 0 ? bandwidth_ : bandwidthOverCellSize_*maxCellSize_);
 }

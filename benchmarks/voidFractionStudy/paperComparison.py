@@ -63,8 +63,8 @@ def run_sample(dim, name, dump, L, r_max, X_target):
     csv_path = os.path.join(study.WORK, "paperComparison-%s.csv" % dim)
     if os.path.exists(csv_path):
         os.remove(csv_path)
-    study.CSV = csv_path
-    study.run_case("paperComparison-%s" % dim, dump, L, X_target, r_max, labelled, two_d=(dim == "2D"))
+    study.run_case("paperComparison-%s" % dim, dump, L, X_target, r_max, labelled, two_d=(dim == "2D"),
+                   csv=csv_path, repeat=3)
     with open(csv_path) as f:
         rows = {r["run"]: r for r in csv.DictReader(f)}
     return [(dim, name, X, label, model, float(rows[run]["error_percent"]), float(rows[run]["smoothness"]),
@@ -74,7 +74,6 @@ def run_sample(dim, name, dump, L, r_max, X_target):
 
 def main():
     os.makedirs(study.WORK, exist_ok=True)
-    study.REPEAT = 3
     dump, L = study.make_packing("L1.2a", 8262, 1.17e-3, 1.2, 0.0)
     _, radii = study.read_dump(dump)
     rows = run_sample("3D", "L1.2a", dump, L, max(radii), 3)

@@ -267,16 +267,20 @@ def tile(dump, L, k):
     return path
 
 
-def bench_dict(runs):
+def bench_dict(runs, csv=None, repeat=None):
     body = "FoamFile { version 2.0; format ascii; class dictionary; object voidFractionBenchmarkDict; }\n"
-    body += "reference { voidFractionModel analytical; }\nrepeat %d;\ncsv \"%s\";\nruns\n{\n" % (REPEAT, CSV)
+    body += "reference { voidFractionModel analytical; }\nrepeat %d;\ncsv \"%s\";\nruns\n{\n" % (
+        repeat or REPEAT, csv or CSV)
     for label, model, key, value in runs:
         coeffs = "%sCoeffs { %s %s; }" % (model, key, value) if key else ""
         body += "    %s { voidFractionModel %s; %s parameter %s; }\n" % (label, model, coeffs, value or 0)
     return body + "}\n"
 
 
-def run_case(name, dump, L, X, r_max, runs, nprocs=1, sample=None, two_d=False):
+def run_case(name, dump, L, X, r_max, runs, nprocs=1, sample=None, two_d=False, csv=None, repeat=None):
+    """Run voidFractionBenchmark on a periodic box of cells X diameters wide;
+    rows are appended to csv (default: the study's), each time the median of
+    repeat calls (default: the study's)."""
     n = max(1, round(L / (X * 2 * r_max)))
     if two_d:
         # one cell thick, the disks on its mid-plane z = 0
@@ -288,7 +292,7 @@ def run_case(name, dump, L, X, r_max, runs, nprocs=1, sample=None, two_d=False):
     case = new_case(os.path.join(WORK, name), mesh, coupling="voidFractionModel analytical;\nalphaMin 0;\n"
                     + ("twoDimensional true;\n" if two_d else ""))
     with open(os.path.join(case, "system", "voidFractionBenchmarkDict"), "w") as f:
-        f.write(bench_dict(runs))
+        f.write(bench_dict(runs, csv, repeat))
     sample = sample or os.path.basename(dump)[:-5]
     if nprocs == 1:
         sh("voidFractionBenchmark -dump %s -sample %s" % (dump, sample), case)

@@ -61,7 +61,7 @@ Foam::voidFractionModels::diffusion::diffusion
 )
 :
     analytical(modelType, dict, mesh),
-    fromAnalytical_(false),
+    initial_(initialSplit::centroid),
     nSteps_(label(positiveCoeff("nSteps", 1))),
     integration_
     (
@@ -88,9 +88,7 @@ Foam::voidFractionModels::diffusion::diffusion
         zeroGradientFvPatchScalarField::typeName
     )
 {
-    fromAnalytical_ =
-        readChoice(coeffs(), "initial", initialSplitNames, initialSplit::centroid)
-     == initialSplit::analytical;
+    initial_ = readChoice(coeffs(), "initial", initialSplitNames, initialSplit::centroid);
     if (scalar(nSteps_) != coeffs().lookupOrDefault<scalar>("nSteps", 1))
     {
         FatalIOErrorInFunction(coeffs())
@@ -190,7 +188,7 @@ void Foam::voidFractionModels::diffusion::distribute
     const UList<scalar>& r
 )
 {
-    if (fromAnalytical_) analytical::distribute(x, r);
+    if (initial_ == initialSplit::analytical) analytical::distribute(x, r);
     else distributeToCentreCells();
 }
 

@@ -236,9 +236,10 @@ def test_diffusion_is_gaussian():
     V = cell_volumes(case)
     C = cell_centres(case)
     devs = []
+    kernels = {}
     for cells in (3, 6):
         b = cells * h
-        kern = model_solid(case, "one.dump", "kernel", V, "bandwidth %r; cutoff 5;" % b)
+        kern = kernels[cells] = model_solid(case, "one.dump", "kernel", V, "bandwidth %r; cutoff 5;" % b)
         # implicit Euler converges to the heat kernel as 1/nSteps
         diff = model_solid(case, "one.dump", "diffusion", V, "bandwidth %r; nSteps 800;" % b)
         devs.append(max(abs(x - y) for x, y in zip(kern, diff)) / max(kern))
@@ -251,6 +252,16 @@ def test_diffusion_is_gaussian():
     check("diffusion = Gaussian kernel within 4 % of the peak at b = 6 cells", devs[1] < 0.04, "(%.4f)" % devs[1])
     check("the difference falls like (h/b)^2 (ratio >= 3 from b = 3 to 6 cells)",
           devs[0] / devs[1] >= 3, "(%.2f)" % (devs[0] / devs[1]))
+    # Gaussians compose: the kernel split of bandwidth b1 smoothed with b2 is
+    # the kernel of sqrt(b1^2 + b2^2); the second moments add exactly
+    b1 = b2 = 6 * h / math.sqrt(2)
+    comp = model_solid(case, "one.dump", "diffusion", V, "initial kernel; kernelCoeffs { bandwidth %r; cutoff 5; }"
+                       " bandwidth %r; nSteps 800;" % (b1, b2))
+    m2 = sum(v * ((x - c) ** 2 + (y - c) ** 2 + (z - c) ** 2) for v, (x, y, z) in zip(comp, C)) / sum(comp)
+    near("diffusion from a kernel split: second moment / (3 (b1^2 + b2^2) / 2)", m2 / (1.5 * (b1 * b1 + b2 * b2)), 1, 0.01)
+    dev = max(abs(x - y) for x, y in zip(kernels[6], comp)) / max(kernels[6])
+    check("diffusion (b2) of a kernel split (b1) = kernel of sqrt(b1^2 + b2^2) within 4 %% of the peak (b1 = b2 = %.2f cells)"
+          % (b1 / h), dev < 0.04, "(%.4f)" % dev)
 
 
 def test_cyclic():
@@ -294,6 +305,10 @@ def test_parallel_periodic():
         # conservation through images across processorCyclic patches, then the serial field
         field_checks("periodic box", case, c, r, model)
         serial_vs_parallel("periodic box", case, "p.dump", model, 1e-9 if model == "diffusion" else 1e-12)
+    # a split with images and combinations of its own over the ranks, smoothed
+    set_coupling(case, "voidFractionModel diffusion;\nalphaMin 0.05;\ndiffusionCoeffs { initial kernel; }\n")
+    field_checks("periodic box, from a kernel split", case, c, r, "diffusion")
+    serial_vs_parallel("periodic box, from a kernel split", case, "p.dump", "diffusion", 1e-9)
     # periodic in y only, split in x: each rank's grid spans y, so analytical
     # wraps the particles centred on the rank by grid index, and the others
     # (centred on the other rank) take images
@@ -404,6 +419,8 @@ def test_bad_coefficients():
         ("hybrid", "subGridResolution 0;", "subGridResolution must be a positive number"),
         ("hybrid", "subGridResolution 2.5;", "whole number"),
         ("diffusion", "initial pcm;", "initial pcm is not one of"),
+        ("diffusion", "initial diffusion;", "initial diffusion is not one of"),
+        ("diffusion", "initial kernel; kernelCoeffs { cutoff 0; }", "diffusionCoeffs.kernelCoeffs"),
         ("diffusion", "coefficient -0.1;", "coefficient must be a positive number"),
         ("diffusion", "nSteps 0;", "nSteps must be a positive number"),
         ("diffusion", "integration rk4;", "integration rk4 is not one of"),

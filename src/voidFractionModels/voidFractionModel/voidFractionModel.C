@@ -50,7 +50,8 @@ Foam::voidFractionModel::voidFractionModel
         zeroGradientFvPatchScalarField::typeName
     ),
     spreadAsMade_(false),
-    rowsSpread_(false)
+    rowsSpread_(false),
+    split_(this)
 {
     if (!(alphaMin_ >= 0 && alphaMin_ < 1))
     {
@@ -131,9 +132,10 @@ void Foam::voidFractionModel::computeRows
     const label n = x0.size();
     nParticles_ = n;
     const bool periodic =
-        images_.shifts().size() && images_.make(x0, r0, centres, imageRules{*this});
-    const UList<point>& x = periodic ? images_.entries() : x0;
-    const UList<scalar>& r = periodic ? images_.radii() : r0;
+        images_.shifts().size() && images_.make(x0, r0, centres, imageRules{*split_});
+    // views of the lists' contents (a swapStep moves none)
+    const UList<point> x(periodic ? images_.entries() : x0);
+    const UList<scalar> r(periodic ? images_.radii() : r0);
 
     // images lie outside the mesh unless a particle is outside it
     centreCells_.setSize(x.size());
@@ -151,14 +153,38 @@ void Foam::voidFractionModel::computeRows
     }
 
     weights_.clear();
-    distribute(x, r);
+    if (split_ == this)
+    {
+        distribute(x, r);
+    }
+    else
+    {
+        swapStep(*split_);
+        split_->distribute(x, r);
+        swapStep(*split_);
+    }
     if (weights_.nParticles() != x.size())
     {
         FatalErrorInFunction
-            << type() << " produced weights for " << weights_.nParticles()
+            << split_->type() << " produced weights for " << weights_.nParticles()
             << " of " << x.size() << " particles and images" << abort(FatalError);
     }
     if (x.size() > n) weights_.joinRows(images_.firstEntry());
+}
+
+
+void Foam::voidFractionModel::swapStep(voidFractionModel& other)
+{
+    std::swap(holders_, other.holders_);
+    images_.swapEntries(other.images_);
+    std::swap(nParticles_, other.nParticles_);
+    centreCells_.swap(other.centreCells_);
+    weights_.swap(other.weights_);
+    solid_.swap(other.solid_);
+    particleVolumes_.swap(other.particleVolumes_);
+    fractionSum_.swap(other.fractionSum_);
+    std::swap(spreadAsMade_, other.spreadAsMade_);
+    std::swap(rowsSpread_, other.rowsSpread_);
 }
 
 

@@ -151,6 +151,19 @@ int main(int argc, char *argv[])
     checkShifts("by the corner", imageShiftsOf(images, 2),
                 List<vector>({vector(0, 3, 0), vector(4, 0, 0), vector(4, 3, 0)}));
 
+    // a second object's entries after a swap are the first's, and back
+    {
+        periodicImages other(unitCase.mesh());
+        images.swapEntries(other);
+        near("after a swap: the other holds the 7 entries", other.entries().size(), 7, 0);
+        near("after a swap: this one holds none and has no images", images.entries().size() + images.any(), 0, 0);
+        near("after a swap: the other's entry 4 is an image of particle 2", other.parent(4), 2, 0);
+        images.swapEntries(other);
+        near("swapped back: entry 4 is an image of particle 2 again", images.parent(4), 2, 0);
+        checkShifts("swapped back, by the corner", imageShiftsOf(images, 2),
+                    List<vector>({vector(0, 3, 0), vector(4, 0, 0), vector(4, 3, 0)}));
+    }
+
     // the model wraps x itself: shifts along x only are its own
     images.make(x, radii, centres, wrapsX(false, 0));
     checkShifts("x wrapped, by the left side", imageShiftsOf(images, 1), List<vector>());

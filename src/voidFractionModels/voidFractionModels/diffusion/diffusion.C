@@ -25,14 +25,6 @@ namespace voidFractionModels
 }
 
 
-const Foam::Enum<Foam::voidFractionModels::diffusion::initialSplit>
-Foam::voidFractionModels::diffusion::initialSplitNames
-({
-    { initialSplit::centroid, "centroid" },
-    { initialSplit::analytical, "analytical" },
-});
-
-
 const Foam::Enum<Foam::voidFractionModels::diffusion::integration>
 Foam::voidFractionModels::diffusion::integrationNames
 ({
@@ -60,8 +52,8 @@ Foam::voidFractionModels::diffusion::diffusion
     const fvMesh& mesh
 )
 :
-    analytical(modelType, dict, mesh),
-    initial_(initialSplit::centroid),
+    voidFractionModel(modelType, dict, mesh),
+    initial_(newInitialSplit(dict)),
     nSteps_(label(positiveCoeff("nSteps", 1))),
     integration_
     (
@@ -88,7 +80,7 @@ Foam::voidFractionModels::diffusion::diffusion
         zeroGradientFvPatchScalarField::typeName
     )
 {
-    initial_ = readChoice(coeffs(), "initial", initialSplitNames, initialSplit::centroid);
+    smoothSplitOf(initial_.ref());
     if (scalar(nSteps_) != coeffs().lookupOrDefault<scalar>("nSteps", 1))
     {
         FatalIOErrorInFunction(coeffs())
@@ -105,6 +97,31 @@ Foam::voidFractionModels::diffusion::diffusion
     readDiffusivity();
     buildLaplacianScheme();
     if (integration_ == integration::explicitEuler) checkExplicitStability();
+}
+
+
+Foam::autoPtr<Foam::voidFractionModel>
+Foam::voidFractionModels::diffusion::newInitialSplit(const dictionary& dict) const
+{
+    const word initial(coeffs().lookupOrDefault<word>("initial", "centroid"));
+    if (initial == typeName || !dictionaryConstructorTablePtr_->found(initial))
+    {
+        DynamicList<word> valid;
+        for (const word& w : dictionaryConstructorTablePtr_->sortedToc())
+        {
+            if (w != typeName) valid.append(w);
+        }
+        FatalIOErrorInFunction(coeffs())
+            << "initial " << initial << " is not one of " << valid
+            << " in " << coeffs().name() << exit(FatalIOError);
+    }
+    // the split is configured where it is named, inside this dictionary
+    dictionary splitDict(dict);
+    splitDict.set("voidFractionModel", initial);
+    const word key(initial + "Coeffs");
+    splitDict.set(key, coeffs().subOrEmptyDict(key));
+    splitDict.subDict(key).name() = coeffs().name() + '.' + key;
+    return voidFractionModel::New(splitDict, mesh());
 }
 
 
@@ -179,17 +196,6 @@ void Foam::voidFractionModels::diffusion::checkExplicitStability() const
             << label(std::ceil(worst*nSteps_ - 1e-12))
             << " or more, or integration implicit" << exit(FatalIOError);
     }
-}
-
-
-void Foam::voidFractionModels::diffusion::distribute
-(
-    const UList<point>& x,
-    const UList<scalar>& r
-)
-{
-    if (initial_ == initialSplit::analytical) analytical::distribute(x, r);
-    else distributeToCentreCells();
 }
 
 

@@ -38,63 +38,14 @@ Usage
 
 #include "fvCFD.H"
 #include "voidFractionModel.H"
-#include "medianCallTime.H"
 #include "particleDistributor.H"
 #include "liggghtsCoupling.H"
-#include "liggghtsDumpReader.H"
 #include "scalarRanges.H"
-#include "wordRe.H"
-#include "fileNameList.H"
-#include "OSspecific.H"
-
-#include <algorithm>
-#include <cctype>
-#include <deque>
-#include <vector>
+#include "dumpSnapshots.H"
+#include "snapshotMapper.H"
 
 namespace
 {
-    //- The files of a dump: the file itself, or those a pattern with * or ?
-    //  matches, in the order of the last number in their names
-    Foam::fileNameList dumpFiles(const Foam::fileName& pattern)
-    {
-        using namespace Foam;
-        const std::string name(pattern.name());
-        if (name.find_first_of("*?") == std::string::npos) return fileNameList(1, pattern);
-        std::string regex;
-        for (const char c : name)
-        {
-            if (c == '*') regex += ".*";
-            else if (c == '?') regex += '.';
-            else if (std::isalnum(static_cast<unsigned char>(c))) regex += c;
-            else { regex += '\\'; regex += c; }
-        }
-        const wordRe matcher(regex, wordRe::REGEX);
-        const fileName dir(pattern.path());
-        auto lastNumber = [](const std::string& s)
-        {
-            const auto end = s.find_last_of("0123456789");
-            if (end == std::string::npos) return -1.0;
-            auto begin = end;
-            while (begin > 0 && std::isdigit(static_cast<unsigned char>(s[begin - 1]))) --begin;
-            return std::stod(s.substr(begin, end - begin + 1));
-        };
-        std::vector<std::pair<double, fileName>> found;
-        for (const fileName& f : readDir(dir.empty() ? fileName(".") : dir, fileName::FILE, false))
-        {
-            if (matcher.match(f)) found.emplace_back(lastNumber(f), dir.empty() ? f : dir/f);
-        }
-        if (found.empty())
-        {
-            FatalErrorInFunction
-                << "no file matches the dump pattern " << pattern << exit(FatalError);
-        }
-        std::sort(found.begin(), found.end());
-        fileNameList files(found.size());
-        forAll(files, i) files[i] = found[i].second;
-        return files;
-    }
-
     void addOptions()
     {
         using namespace Foam;
@@ -130,80 +81,70 @@ namespace
         );
     }
 
-    //- One snapshot of a dump, and the fraction of the dump read once it was
-    struct snapshot
+    //- couplingProperties, with -model's voidFractionModel
+    Foam::dictionary couplingDictionary(const Foam::argList& args, const Foam::fvMesh& mesh)
     {
-        Foam::label timestep;
-        Foam::particleData particles;
-        Foam::scalar read;
-    };
-
-    //- The snapshots of the dump's files in order, read ahead on demand
-    class snapshotQueue
-    {
-        const Foam::fileNameList& files_;
-        std::deque<snapshot> ahead_;
-        Foam::label nextFile_ = 0;
-        Foam::autoPtr<Foam::liggghtsDumpReader> reader_;
-
-    public:
-
-        explicit snapshotQueue(const Foam::fileNameList& files) : files_(files) {}
-
-        //- Read one more snapshot, if the files hold one
-        void readAhead()
+        using namespace Foam;
+        IOdictionary couplingProperties
+        (
+            IOobject
+            (
+                "couplingProperties",
+                mesh.time().constant(),
+                mesh,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE
+            )
+        );
+        dictionary dict(couplingProperties);
+        if (args.found("model"))
         {
-            using namespace Foam;
-            particleData p;
-            while (true)
-            {
-                if (!reader_.valid())
-                {
-                    if (nextFile_ == files_.size()) return;
-                    reader_.reset(new liggghtsDumpReader(files_[nextFile_++]));
-                }
-                if (reader_->read(p)) break;
-                reader_.clear();
-            }
-            const scalar read = (nextFile_ - 1 + reader_->progress())/files_.size();
-            ahead_.push_back({reader_->timestep(), std::move(p), min(max(read, scalar(0)), scalar(1))});
+            dict.set("voidFractionModel", args.get<word>("model"));
         }
+        return dict;
+    }
 
-        //- The next snapshot, reading another behind it
-        snapshot pop()
-        {
-            snapshot next(std::move(ahead_.front()));
-            ahead_.pop_front();
-            readAhead();
-            return next;
-        }
-
-        std::size_t size() const { return ahead_.size(); }
-        snapshot& front() { return ahead_.front(); }
-    };
-
-    //- The progress line of a series: snapshot, time, share of the dump
-    //  read, elapsed and an estimate of what remains
-    void printProgress
+    //- Map the queue's snapshots (those -time selects, or the last with
+    //  -latest), each into the time directory of its TIMESTEP x -deltaT
+    void mapSeries
     (
-        const Foam::label nSeen,
-        const snapshot& now,
-        const Foam::word& timeName,
-        const Foam::scalar elapsed
+        const Foam::argList& args,
+        Foam::Time& runTime,
+        snapshotQueue& ahead,
+        snapshotMapper& mapper,
+        const Foam::clockTime& clock
     )
     {
         using namespace Foam;
-        const scalar done = now.read;
-        const label precision = Sout.precision(4);
-        Info<< nl << "Snapshot " << nSeen << ", TIMESTEP " << now.timestep << ", time "
-            << timeName << ": " << label(100*done + 0.5) << " % of the dump read, "
-            << elapsed << " s elapsed";
-        if (done > 0 && done < 1)
+        const scalar deltaT = args.getOrDefault<scalar>("deltaT", 1);
+        const scalarRanges times
+        (
+            args.found("time") ? scalarRanges::parse(args["time"]) : scalarRanges()
+        );
+        const bool latest = args.found("latest");
+        label nSeen = 0, nMapped = 0;
+        while (ahead.size())
         {
-            Info<< ", about " << elapsed*(1 - done)/done << " s left";
+            snapshot now(ahead.pop());
+            ++nSeen;
+            const scalar t = now.timestep*deltaT;
+            if ((latest && ahead.size()) || (times.size() && !times.match(t))) continue;
+            runTime.setTime(t, nSeen);
+            particleData particles;
+            const particleHolders holders(mapper.hold(std::move(now.particles), particles));
+            printProgress(nSeen, now, runTime.timeName(), clock.elapsedTime());
+            mapper.mapAndWrite(particles, holders);
+            ++nMapped;
         }
-        Info<< endl;
-        Sout.precision(precision);
+        if (nMapped == 0)
+        {
+            FatalErrorInFunction
+                << "none of the " << nSeen << " snapshots of " << args["dump"]
+                << " is at a time -time selects (times are TIMESTEP x deltaT " << deltaT << ")"
+                << exit(FatalError);
+        }
+        Info<< nl << "Mapped " << nMapped << " of " << nSeen << " snapshots in "
+            << clock.elapsedTime() << " s" << endl;
     }
 }
 
@@ -221,60 +162,13 @@ int main(int argc, char *argv[])
         FatalErrorInFunction
             << "missing -dump FILE (a LIGGGHTS text dump) or -liggghts" << exit(FatalError);
     }
-
-    IOdictionary couplingProperties
-    (
-        IOobject
-        (
-            "couplingProperties",
-            runTime.constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
-    );
-    dictionary dict(couplingProperties);
-    if (args.found("model"))
-    {
-        dict.set("voidFractionModel", args.get<word>("model"));
-    }
+    const dictionary dict(couplingDictionary(args, mesh));
 
     clockTime clock;
     autoPtr<liggghtsCoupling> dem;
     if (args.found("liggghts")) dem.reset(new liggghtsCoupling(runTime, dict));
     autoPtr<voidFractionModel> model(voidFractionModel::New(dict, mesh));
-    const word fieldName(args.getOrDefault<word>("name", "voidfraction"));
-    const label repeat = args.getOrDefault<label>("repeat", 0);
-
-    // map particles (holders: who holds which) and write the field into
-    // the current time
-    auto mapAndWrite = [&](const particleData& particles, const particleHolders& holders)
-    {
-        clock.timeIncrement();
-        model->update(particles, particleHolders(holders));
-        const scalar firstCall = clock.timeIncrement();
-        // the repeated calls first: their solver output must not split the
-        // summary's lines
-        const scalar median =
-            repeat > 0 ? medianCallTime(model(), particles, repeat, holders) : 0;
-        model->report(Info);
-        const label precision = Sout.precision(4);
-        Info<< "time per call: first " << firstCall << " s";
-        if (repeat > 0)
-        {
-            Info<< ", median of " << repeat << " " << median << " s, "
-                << model->stats().nParticles/max(median, VSMALL) << " particles/s";
-        }
-        Info<< endl;
-        Sout.precision(precision);
-        volScalarField out
-        (
-            IOobject(fieldName, runTime.timeName(), mesh),
-            model->voidFraction()
-        );
-        out.write();
-        Info<< "Wrote " << fieldName << " to " << runTime.timePath() << endl;
-    };
+    snapshotMapper mapper(args, model(), clock);
 
     if (dem.valid())
     {
@@ -286,37 +180,12 @@ int main(int argc, char *argv[])
         );
         Info<< "Read " << dem->nParticles() << " particles from LIGGGHTS in "
             << clock.timeIncrement() << " s" << endl;
-        mapAndWrite(particles, holders);
+        mapper.mapAndWrite(particles, holders);
         Info<< "End" << endl;
         return 0;
     }
 
-    // a dump is read whole on every rank; with -distribute each rank keeps
-    // the particles near its cells, as from a DEM
-    const bool distribute = args.found("distribute") && Pstream::parRun();
-    // built once (its ranks' boxes and bins are collective work), used for
-    // every snapshot
-    autoPtr<particleDistributor> distributor;
-    auto hold = [&](particleData&& all, particleData& particles)
-    {
-        if (!distribute)
-        {
-            particles = std::move(all);
-            return particleHolders();
-        }
-        labelList mine;
-        for (label i = Pstream::myProcNo(); i < all.size(); i += Pstream::nProcs())
-        {
-            mine.append(i);
-        }
-        if (!distributor.valid()) distributor.reset(new particleDistributor(model()));
-        particleHolders holders(distributor->distribute(all.reordered(mine), particles));
-        Info<< "Particles held: at most "
-            << returnReduce(particles.size(), maxOp<label>()) << " of " << all.size()
-            << " on a rank" << endl;
-        return holders;
-    };
-
+    // a dump is read whole on every rank (-distribute then deals it out)
     if (args.found("previous"))
     {
         model->update
@@ -325,16 +194,9 @@ int main(int argc, char *argv[])
         );
     }
 
-    const fileNameList files(dumpFiles(args.get<fileName>("dump").expand()));
-    const scalar deltaT = args.getOrDefault<scalar>("deltaT", 1);
-    const scalarRanges times
-    (
-        args.found("time") ? scalarRanges::parse(args["time"]) : scalarRanges()
-    );
-    const bool latest = args.found("latest");
-
     // one read ahead: a single snapshot goes into the start time, and
     // -latest knows the last when nothing follows it
+    const fileNameList files(dumpFiles(args.get<fileName>("dump").expand()));
     snapshotQueue ahead(files);
     ahead.readAhead();
     ahead.readAhead();
@@ -345,34 +207,13 @@ int main(int argc, char *argv[])
     if (ahead.size() == 1)
     {
         particleData particles;
-        const particleHolders holders(hold(std::move(ahead.front().particles), particles));
-        mapAndWrite(particles, holders);
-        Info<< "End" << endl;
-        return 0;
+        const particleHolders holders(mapper.hold(std::move(ahead.front().particles), particles));
+        mapper.mapAndWrite(particles, holders);
     }
-
-    label nSeen = 0, nMapped = 0;
-    while (ahead.size())
+    else
     {
-        snapshot now(ahead.pop());
-        ++nSeen;
-        const scalar t = now.timestep*deltaT;
-        if ((latest && ahead.size()) || (times.size() && !times.match(t))) continue;
-        runTime.setTime(t, nSeen);
-        particleData particles;
-        const particleHolders holders(hold(std::move(now.particles), particles));
-        printProgress(nSeen, now, runTime.timeName(), clock.elapsedTime());
-        mapAndWrite(particles, holders);
-        ++nMapped;
+        mapSeries(args, runTime, ahead, mapper, clock);
     }
-    if (nMapped == 0)
-    {
-        FatalErrorInFunction
-            << "none of the " << nSeen << " snapshots of " << args["dump"]
-            << " is at a time -time selects (times are TIMESTEP x deltaT " << deltaT << ")"
-            << exit(FatalError);
-    }
-    Info<< nl << "Mapped " << nMapped << " of " << nSeen << " snapshots in "
-        << clock.elapsedTime() << " s" << nl << "End" << endl;
+    Info<< "End" << endl;
     return 0;
 }

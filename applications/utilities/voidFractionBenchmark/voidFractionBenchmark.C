@@ -106,6 +106,84 @@ namespace
         m.conservation = s.conservationError();
         return m;
     }
+
+    //- Kalderon et al.'s X: the mean cell size (in 2D from the area in the
+    //  plane) over the largest particle diameter
+    scalar sizeRatioX(const fvMesh& mesh, const bool twoD, const scalar rMax)
+    {
+        const label nCells = returnReduce(mesh.nCells(), sumOp<label>());
+        const scalar meanV = gSum(mesh.V().field())/nCells;
+        scalar thickness = 0;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (mesh.solutionD()[d] == -1) thickness = mesh.bounds().span()[d];
+        }
+        const scalar ds =
+            (twoD && thickness > 0) ? Foam::sqrt(meanV/thickness) : Foam::cbrt(meanV);
+        return ds/(2*rMax);
+    }
+
+    //- One line per run on the terminal, and one row of the CSV (appended,
+    //  with a header when the file is new), written by the master only
+    class benchmarkCsv
+    {
+        autoPtr<OFstream> os_;
+        const word sample_;
+        const label nParticles_;
+        const label nCells_;
+        const scalar X_;
+
+    public:
+
+        benchmarkCsv
+        (
+            const fileName& name,
+            const word& sample,
+            const label nParticles,
+            const label nCells,
+            const scalar X
+        )
+        :
+            sample_(sample),
+            nParticles_(nParticles),
+            nCells_(nCells),
+            X_(X)
+        {
+            if (!Pstream::master()) return;
+            const bool isNew = !isFile(name);
+            os_.reset(new OFstream(name, IOstream::ASCII, IOstream::currentVersion,
+                                   IOstream::UNCOMPRESSED, true));
+            if (!os_().good())
+            {
+                FatalErrorInFunction
+                    << "cannot write the CSV file " << name << exit(FatalError);
+            }
+            if (isNew)
+            {
+                os_()<< "sample,nParticles,nCells,X,nProcs,run,model,parameter,"
+                     << "error_percent,smoothness,conservation,median_s,particles_per_s,"
+                     << "peak_memory_MB" << nl;
+            }
+            os_().precision(8);
+        }
+
+        void row(const word& run, const dictionary& dict, const metrics& m)
+        {
+            // the largest rank's peak so far (every run adds to the same process)
+            const scalar memory = returnReduce(peakMemoryMB(), maxOp<scalar>());
+            Info<< "    " << run << ": error " << m.error << " %, smoothness " << m.smoothness
+                << " 1/m, conservation " << m.conservation << ", median " << m.time << " s"
+                << endl;
+            if (!os_.valid()) return;
+            // only the master writes: nothing collective here
+            os_()<< sample_ << ',' << nParticles_ << ',' << nCells_ << ',' << X_ << ','
+                 << Pstream::nProcs() << ',' << run << ','
+                 << dict.get<word>("voidFractionModel") << ','
+                 << dict.getOrDefault<scalar>("parameter", 0) << ',' << m.error << ','
+                 << m.smoothness << ',' << m.conservation << ',' << m.time << ','
+                 << nParticles_/max(m.time, VSMALL) << ',' << memory << endl;
+        }
+    };
 }
 
 
@@ -143,19 +221,11 @@ int main(int argc, char *argv[])
     const particleData particles(particleData::readLiggghtsDump(dumpFile));
     const scalar rMax = gMax(particles.radii());
 
-    // cell size as Kalderon et al.'s multiple X of the largest diameter
     dictionary referenceDict(coupling);
     referenceDict.merge(benchDict.subDict("reference"));
-    const bool twoD = referenceDict.getOrDefault<bool>("twoDimensional", false);
     const label nCells = returnReduce(mesh.nCells(), sumOp<label>());
-    const scalar meanV = gSum(mesh.V().field())/nCells;
-    scalar thickness = 0;
-    for (direction d = 0; d < 3; ++d)
-    {
-        if (mesh.solutionD()[d] == -1) thickness = mesh.bounds().span()[d];
-    }
-    const scalar ds = (twoD && thickness > 0) ? Foam::sqrt(meanV/thickness) : Foam::cbrt(meanV);
-    const scalar X = ds/(2*rMax);
+    const scalar X =
+        sizeRatioX(mesh, referenceDict.getOrDefault<bool>("twoDimensional", false), rMax);
 
     Info<< "Sample " << sample << ": " << particles.size() << " particles, "
         << nCells << " cells, X = " << X << nl << endl;
@@ -169,41 +239,8 @@ int main(int argc, char *argv[])
             << exit(FatalError);
     }
 
-    autoPtr<OFstream> csv;
-    if (Pstream::master())
-    {
-        const bool isNew = !isFile(csvName);
-        csv.reset(new OFstream(csvName, IOstream::ASCII, IOstream::currentVersion,
-                               IOstream::UNCOMPRESSED, true));
-        if (!csv().good())
-        {
-            FatalErrorInFunction
-                << "cannot write the CSV file " << csvName << exit(FatalError);
-        }
-        if (isNew)
-        {
-            csv()<< "sample,nParticles,nCells,X,nProcs,run,model,parameter,"
-                 << "error_percent,smoothness,conservation,median_s,particles_per_s,"
-                 << "peak_memory_MB" << nl;
-        }
-    }
-    auto row = [&](const word& run, const dictionary& dict, const metrics& m)
-    {
-        // the largest rank's peak so far (every run adds to the same process)
-        const scalar memory = returnReduce(peakMemoryMB(), maxOp<scalar>());
-        Info<< "    " << run << ": error " << m.error << " %, smoothness " << m.smoothness
-            << " 1/m, conservation " << m.conservation << ", median " << m.time << " s" << endl;
-        if (!csv.valid()) return;
-        csv().precision(8);
-        // only the master writes: nothing collective here
-        csv()<< sample << ',' << particles.size() << ',' << nCells << ',' << X << ','
-             << Pstream::nProcs() << ',' << run << ','
-             << dict.get<word>("voidFractionModel") << ','
-             << dict.getOrDefault<scalar>("parameter", 0) << ',' << m.error << ','
-             << m.smoothness << ',' << m.conservation << ',' << m.time << ','
-             << particles.size()/max(m.time, VSMALL) << ',' << memory << endl;
-    };
-    row("reference", referenceDict, ref);
+    benchmarkCsv csv(csvName, sample, particles.size(), nCells, X);
+    csv.row("reference", referenceDict, ref);
 
     for (const entry& e : runs)
     {
@@ -215,7 +252,7 @@ int main(int argc, char *argv[])
         }
         dictionary runDict(coupling);
         runDict.merge(e.dict());
-        row(e.keyword(), runDict, measure(runDict, mesh, particles, reference, repeat));
+        csv.row(e.keyword(), runDict, measure(runDict, mesh, particles, reference, repeat));
     }
 
     Info<< nl << "Appended to " << csvName << nl << "End" << endl;

@@ -144,7 +144,7 @@ namespace
                 << exit(FatalError);
         }
         Info<< nl << "Mapped " << nMapped << " of " << nSeen << " snapshots in "
-            << clock.elapsedTime() << " s" << endl;
+            << seconds(clock.elapsedTime()) << " s" << endl;
     }
 }
 
@@ -179,7 +179,7 @@ int main(int argc, char *argv[])
             particleDistributor(model()).distribute(dem->particles(!Pstream::parRun()), particles)
         );
         Info<< "Read " << dem->nParticles() << " particles from LIGGGHTS in "
-            << clock.timeIncrement() << " s" << endl;
+            << seconds(clock.timeIncrement()) << " s" << endl;
         mapper.mapAndWrite(particles, holders);
         Info<< "End" << endl;
         return 0;
@@ -202,7 +202,7 @@ int main(int argc, char *argv[])
     ahead.readAhead();
     Info<< "Read " << ahead.front().particles.size() << " particles from " << files[0];
     if (files.size() > 1) Info<< " (first of " << files.size() << " files)";
-    Info<< " in " << clock.timeIncrement() << " s" << endl;
+    Info<< " in " << seconds(clock.timeIncrement()) << " s" << endl;
 
     if (ahead.size() == 1)
     {

@@ -111,8 +111,16 @@ Foam::periodicImages::periodicImages(const fvMesh& mesh)
     combine(translations, tol);
     if (shifts_.size())
     {
-        Info<< "voidFractionModel: periodic translations " << translations
+        // as a person reads them: 4 digits, round-off components as 0
+        List<vector> shown(translations);
+        for (vector& t : shown)
+        {
+            for (direction d = 0; d < 3; ++d) if (mag(t[d]) <= tol) t[d] = 0;
+        }
+        const label precision = Sout.precision(4);
+        Info<< "voidFractionModel: periodic translations " << shown
             << ": particles by a cyclic patch get periodic images" << endl;
+        Sout.precision(precision);
     }
 }
 

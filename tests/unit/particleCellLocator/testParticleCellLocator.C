@@ -30,17 +30,6 @@ Description
 using namespace Foam;
 using testHarness::near;
 
-namespace
-{
-    const char* header =
-        "scale 0.001;\n"
-        "blocks (hex (0 1 2 3 4 5 6 7) ";
-    const char* walls =
-        "boundary ( walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4)"
-        " (3 7 6 2) (0 3 2 1) (4 5 6 7)); } );";
-}
-
-
 int main(int argc, char *argv[])
 {
     Random rng(7);
@@ -50,8 +39,11 @@ int main(int argc, char *argv[])
         const testHarness::blockMeshCase box
         (
             "locatorGraded",
-            std::string("vertices ((0 0 0) (4 0 0) (4 3 0) (0 3 0) (0 0 2) (4 0 2) (4 3 2) (0 3 2));\n")
-          + header + "(5 4 3) simpleGrading (3 0.5 1));\n" + walls
+            testHarness::blockMeshCase::walledBlock
+            (
+                "(0 0 0) (4 0 0) (4 3 0) (0 3 0) (0 0 2) (4 0 2) (4 3 2) (0 3 2)",
+                "(5 4 3) simpleGrading (3 0.5 1)"
+            )
         );
         const fvMesh& mesh = box.mesh();
         const particleCellLocator locator(mesh);
@@ -86,8 +78,11 @@ int main(int argc, char *argv[])
         const testHarness::blockMeshCase sheared
         (
             "locatorSheared",
-            std::string("vertices ((0 0 0) (4 0 0) (5 3 0) (1 3 0) (0 0 2) (4 0 2) (5 3 2) (1 3 2));\n")
-          + header + "(4 3 2) simpleGrading (1 1 1));\n" + walls
+            testHarness::blockMeshCase::walledBlock
+            (
+                "(0 0 0) (4 0 0) (5 3 0) (1 3 0) (0 0 2) (4 0 2) (5 3 2) (1 3 2)",
+                "(4 3 2) simpleGrading (1 1 1)"
+            )
         );
         const fvMesh& mesh = sheared.mesh();
         const particleCellLocator locator(mesh);

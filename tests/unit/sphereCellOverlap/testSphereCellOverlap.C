@@ -32,10 +32,6 @@ using testHarness::near;
 
 namespace
 {
-    const char* walls =
-        "boundary ( walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4)"
-        " (3 7 6 2) (0 3 2 1) (4 5 6 7)); } );";
-
     scalar ballVolume(const scalar R) { return 4.0/3.0*constant::mathematical::pi*pow3(R); }
 
     //- The volumes of the sphere per cell, summed (cells counted)
@@ -75,9 +71,11 @@ int main(int argc, char *argv[])
         const testHarness::blockMeshCase box
         (
             "overlapBox",
-            "scale 0.001;\n"
-            "vertices ((0 0 0) (4 0 0) (4 4 0) (0 4 0) (0 0 4) (4 0 4) (4 4 4) (0 4 4));\n"
-            "blocks (hex (0 1 2 3 4 5 6 7) (4 4 4) simpleGrading (1 1 1));\n" + std::string(walls)
+            testHarness::blockMeshCase::walledBlock
+            (
+                "(0 0 0) (4 0 0) (4 4 0) (0 4 0) (0 0 4) (4 0 4) (4 4 4) (0 4 4)",
+                "(4 4 4) simpleGrading (1 1 1)"
+            )
         );
         const fvMesh& mesh = box.mesh();
         const sphereCellOverlap overlap(mesh);
@@ -97,9 +95,11 @@ int main(int argc, char *argv[])
         const testHarness::blockMeshCase sheared
         (
             "overlapSheared",
-            "scale 0.001;\n"
-            "vertices ((0 0 0) (4 0 0) (5 3 0) (1 3 0) (0 0 4) (4 0 4) (5 3 4) (1 3 4));\n"
-            "blocks (hex (0 1 2 3 4 5 6 7) (4 3 4) simpleGrading (1 1 1));\n" + std::string(walls)
+            testHarness::blockMeshCase::walledBlock
+            (
+                "(0 0 0) (4 0 0) (5 3 0) (1 3 0) (0 0 4) (4 0 4) (5 3 4) (1 3 4)",
+                "(4 3 4) simpleGrading (1 1 1)"
+            )
         );
         const fvMesh& mesh = sheared.mesh();
         const sphereCellOverlap overlap(mesh);

@@ -330,7 +330,7 @@ def test_bad_input():
     set_dem(case, youngs=1e6)
     rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
     screen = os.path.join(case, "DEM", "log.liggghtsScreen")
-    reason = open(screen).read() if os.path.isfile(screen) else ""
+    reason = open(screen, errors="replace").read() if os.path.isfile(screen) else ""
     check("LIGGGHTS error that aborts: the log names DEM/log.liggghtsScreen, which says why",
           rc not in (0, 124) and "log.liggghtsScreen" in out and "youngsModulus >= 5e6" in reason,
           "" if rc not in (0, 124) else out[-600:])

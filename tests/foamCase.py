@@ -17,7 +17,8 @@ def sh(cmd, cwd, check=True):
     """Run a shell command with the project environment; return (rc, output)."""
     full = ". %s/etc/bashrc >/dev/null && %s" % (ROOT, cmd)
     p = subprocess.run(["bash", "-c", full], cwd=cwd, stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, stdin=subprocess.DEVNULL)
+                       stderr=subprocess.STDOUT, text=True, errors="replace",
+                       stdin=subprocess.DEVNULL)
     if check and p.returncode != 0:
         raise RuntimeError("'%s' failed in %s:\n%s" % (cmd, cwd, p.stdout[-3000:]))
     return p.returncode, p.stdout

@@ -456,8 +456,10 @@ def test_mueller_bed():
                                      for step in open(log).read().split("\nTime = ")[1:]) if m]
     check("fluid mass: continuity error of every time step below 1e-9 (sum local)",
           len(errors) > 1000 and max(errors) < 1e-9, "(%d steps, largest %.2e)" % (len(errors), max(errors or [0])))
-    for kind, column, lo, hi in (("voidfraction", "voidfraction", 0.2, 1.0), ("particleVelocity", "vz_m_s", -5, 5)):
-        for height in ("16.4", "31.2"):
+    result = dict(l.split() for l in open(os.path.join(case, "muellerBed.result")))
+    for kind, column, lo, hi, heights in (("voidfraction", "voidfraction", 0.2, 1.0, ("16.4", "31.2")),
+                                          ("particleVelocity", "vz_m_s", -5, 5, ("15.0", "20.0", "25.0", "35.0"))):
+        for height in heights:
             path = os.path.join(case, "postProcessing", "profiles", "%s_h%smm.csv" % (kind, height))
             ok = os.path.isfile(path) and open(path).readline().strip() == "x_m," + column
             data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2) if ok else np.zeros((0, 2))
@@ -465,7 +467,36 @@ def test_mueller_bed():
                   ok and len(data) >= 9 and np.isfinite(data).all() and data[:, 0].min() > 0
                   and data[:, 0].max() < 0.044 and data[:, 1].min() >= lo and data[:, 1].max() <= hi,
                   "(%d points, %.4g..%.4g)" % (len(data), data[:, 1].min(), data[:, 1].max()) if len(data) else "")
-
+            measured = os.path.join(ROOT, "benchmarks", "muellerBed", "measured", "%s_U0.9_h%smm.csv" % (kind, height))
+            if not os.path.isfile(measured) or not len(data):
+                continue
+            points = np.loadtxt(measured, delimiter=",", skiprows=1, ndmin=2)
+            # the profile's value at each measured x, by hand: between its two neighbours, or its end value
+            expected = []
+            for x, value in points:
+                j = min(max(np.searchsorted(data[:, 0], x), 1), len(data) - 1)
+                w = min(max((x - data[j - 1, 0])/(data[j, 0] - data[j - 1, 0]), 0), 1)
+                expected.append(abs((1 - w)*data[j - 1, 1] + w*data[j, 1] - value))
+            key = "%s_h%smm_mad" % (kind, height)
+            check("%s at %s mm: the mean absolute difference from the measurement in muellerBed.result" % (kind, height),
+                  key in result and abs(float(result[key]) - np.mean(expected)) < 1e-5,
+                  "(%s, by hand %.6g)" % (result.get(key), np.mean(expected)))
+    deep = copy_tutorial("muellerBed", "muellerBed-deep")
+    shutil.copytree(os.path.join(case, "DEM", "post"), os.path.join(deep, "DEM", "post"))
+    rc, out = sh("./Allrun analytical 0.9 4 0.03 1 2", deep, check=False)
+    check("Allrun with 2 cells across the depth completed on a 9 x 2 x 26 mesh",
+          rc == 0 and "(9 x 2 x 26)" in out, "" if rc == 0 else out[-1500:])
+    u = open(os.path.join(deep, "0", "U")).read()
+    check("2 cells across the depth: front and back are no-slip for the gas",
+          re.search(r'"\(front\|back\)"\s*\{\s*type\s+noSlip;', u) is not None, "")
+    probes = open(os.path.join(deep, "system", "probeLocations")).read()
+    ys = {float(m) for m in re.findall(r"\(\S+ (\S+) \S+\)", probes)}
+    check("2 cells across the depth: probes at both cells' centres (y = 2.5 and 7.5 mm)",
+          len(ys) == 2 and all(any(abs(y - c) < 1e-9 for y in ys) for c in (0.0025, 0.0075)), "(%s)" % sorted(ys))
+    path = os.path.join(deep, "postProcessing", "profiles", "voidfraction_h16.4mm.csv")
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2) if os.path.isfile(path) else np.zeros((0, 2))
+    check("2 cells across the depth: one depth-averaged void fraction per column of cells (9)",
+          len(data) == 9 and np.isfinite(data).all() and data[:, 1].min() >= 0.2 and data[:, 1].max() <= 1, "")
 
 def main():
     checks.run([test_settling_sphere, test_drag_laws, test_restart, test_serial_parallel,

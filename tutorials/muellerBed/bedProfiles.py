@@ -2,21 +2,24 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """The time-averaged profiles of a muellerBed run.
 
-    bedProfiles.py --probes NX NZ   the probe locations for system/probeLocations:
+    bedProfiles.py --probes NX NY NZ   the probe locations for system/probeLocations:
                                     the cell centres of the rows either side of
                                     each measured height, on the mesh Allrun makes
     bedProfiles.py [--start T]      after a run: the averages over t > T (default
                                     the first second, or a third of shorter runs)
 
-The void fraction across the width at each height is interpolated linearly in
-z between the two rows of cell centres around it, and averaged in time (the
-depth is one cell). The particles' vertical velocity is averaged over the
-particles in a slice one diameter thick at each height, in 2 mm bins across
-the width, weighted by particle (as a magnetic resonance time average is).
-Each average is also taken over the two halves of the window: their mean
-difference says how converged it is. Writes postProcessing/profiles/*.csv,
-muellerBed.result and muellerBed.png; profiles under measured/ with the same
-names as the written ones are drawn beside them."""
+The void fraction across the width at each measured height (sliceLow and
+sliceHigh in DEM/in.parameters) is interpolated linearly in z between the two
+rows of cell centres around it, averaged over the cells across the depth (as
+the magnetic resonance signal is) and in time.
+The particles' vertical velocity at each height where it was measured
+(velocity1, velocity2, ...) is averaged over the particles in a slice one
+diameter thick, in 2 mm bins across the width, weighted by particle (as a
+magnetic resonance time average is). Each average is also taken over the two
+halves of the window: their mean difference says how converged it is. Writes
+postProcessing/profiles/*.csv, muellerBed.result and muellerBed.png, with the
+measured profiles of the run's inlet velocity (benchmarks/muellerBed/measured/)
+drawn beside the simulated ones and their mean absolute difference printed."""
 import glob
 import os
 import re
@@ -24,14 +27,15 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.environ.get("VFM_PROJECT_DIR",
-                                               os.path.join(os.path.dirname(os.path.abspath(__file__)), "../..")),
-                                "tutorials"))
+PROJECT = os.environ.get("VFM_PROJECT_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
+sys.path[:0] = [os.path.join(PROJECT, "tutorials"), os.path.join(PROJECT, "benchmarks", "muellerBed")]
 import caseProperties
+import measurement
 
 PARAMETERS = caseProperties.dem_parameters(".")
 WIDTH, DEPTH, TOP = PARAMETERS["width"], PARAMETERS["depth"], PARAMETERS["top"]
 HEIGHTS = (PARAMETERS["sliceLow"], PARAMETERS["sliceHigh"])
+VELOCITY_HEIGHTS = sorted(v for k, v in PARAMETERS.items() if re.fullmatch(r"velocity\d+", k))
 BIN = 0.002
 
 
@@ -39,13 +43,13 @@ def label(height):
     return "h%.1fmm" % (1000*height)
 
 
-def probe_locations(nx, nz):
+def probe_locations(nx, ny, nz):
     dz = TOP/nz
     points = []
     for h in HEIGHTS:
         below = min(max(int(np.floor(h/dz - 0.5)), 0), nz - 2)
         for row in (below, below + 1):
-            points += [((i + 0.5)*WIDTH/nx, DEPTH/2, (row + 0.5)*dz) for i in range(nx)]
+            points += [((i + 0.5)*WIDTH/nx, (j + 0.5)*DEPTH/ny, (row + 0.5)*dz) for j in range(ny) for i in range(nx)]
     return "probeLocations\n(\n%s\n);\n" % "\n".join("    (%.9g %.9g %.9g)" % p for p in points)
 
 
@@ -76,35 +80,48 @@ def void_fraction_profiles(start):
         lower, upper = np.isclose(points[:, 2], z0), np.isclose(points[:, 2], z1)
         weight = (h - z0)/(z1 - z0) if z1 > z0 else 0.0
         at_height = (1 - weight)*values[:, lower] + weight*values[:, upper]
-        profiles[h] = (points[lower, 0], {k: at_height[w].mean(axis=0) for k, w in windows(t, start).items()})
+        x, column = np.unique(points[lower, 0], return_inverse=True)
+        across_depth = np.stack([at_height[:, column == i].mean(axis=1) for i in range(len(x))], axis=1)
+        profiles[h] = (x, {k: across_depth[w].mean(axis=0) for k, w in windows(t, start).items()})
     return profiles
 
 
-def read_slices(path):
-    """per snapshot: time step, x, vz of the particles in the slice"""
+def read_band(path):
+    """per snapshot: (time step, x, z, vz) of the particles in the dumped band"""
     snapshots, lines, i = [], open(path).read().split("\n"), 0
     while i < len(lines) and lines[i].startswith("ITEM: TIMESTEP"):
         step, n = int(lines[i + 1]), int(lines[i + 3])
         columns = lines[i + 8].split()[2:]
-        data = np.array([l.split() for l in lines[i + 9:i + 9 + n]], float).reshape(n, len(columns))
-        snapshots.append((step, data[:, columns.index("x")], data[:, columns.index("vz")]))
+        data = np.array(" ".join(lines[i + 9:i + 9 + n]).split(), float).reshape(n, len(columns))
+        snapshots.append((step, data[:, columns.index("x")], data[:, columns.index("z")], data[:, columns.index("vz")]))
         i += 9 + n
     return snapshots
 
 
 def velocity_profiles(start):
     edges = np.linspace(0, WIDTH, int(round(WIDTH/BIN)) + 1)
-    dt = PARAMETERS["demStep"]
+    snapshots = read_band(os.path.join("DEM", "post", "band.dump"))
+    t = np.array([s[0]*PARAMETERS["demStep"] for s in snapshots])
     profiles = {}
-    for h, name in zip(HEIGHTS, ("low", "high")):
-        snapshots = read_slices(os.path.join("DEM", "post", "slice_%s.dump" % name))
-        t = np.array([s[0]*dt for s in snapshots])
-        sums = np.array([np.histogram(s[1], edges, weights=s[2])[0] for s in snapshots])
-        counts = np.array([np.histogram(s[1], edges)[0] for s in snapshots])
+    for h in VELOCITY_HEIGHTS:
+        inside = [np.abs(z - h) < PARAMETERS["sliceHalf"] for _, _, z, _ in snapshots]
+        sums = np.array([np.histogram(x[k], edges, weights=vz[k])[0] for (_, x, _, vz), k in zip(snapshots, inside)])
+        counts = np.array([np.histogram(x[k], edges)[0] for (_, x, _, _), k in zip(snapshots, inside)])
         profiles[h] = (0.5*(edges[1:] + edges[:-1]),
-                       {k: sums[w].sum(axis=0)/np.maximum(counts[w].sum(axis=0), 1)
+                       {k: mean_per_bin(sums[w].sum(axis=0), counts[w].sum(axis=0))
                         for k, w in windows(t, start).items()})
     return profiles
+
+
+def mean_per_bin(sums, counts):
+    """NaN where no particle passed: a bin without particles has no velocity"""
+    return np.where(counts > 0, sums/np.maximum(counts, 1), np.nan)
+
+
+def inlet_velocity():
+    """the superficial velocity Allrun wrote into 0/U (the last entry of the inlet's table)"""
+    m = re.findall(r"\(\s*[-+0-9.eE]+\s+\(\s*0\s+0\s+([-+0-9.eE]+)\s*\)\s*\)", open("0/U").read())
+    return float(m[-1]) if m else None
 
 
 def write_csv(path, x, values, column):
@@ -113,8 +130,8 @@ def write_csv(path, x, values, column):
 
 
 def main():
-    if len(sys.argv) == 4 and sys.argv[1] == "--probes":
-        sys.stdout.write(probe_locations(int(sys.argv[2]), int(sys.argv[3])))
+    if len(sys.argv) == 5 and sys.argv[1] == "--probes":
+        sys.stdout.write(probe_locations(*(int(n) for n in sys.argv[2:])))
         return
     t_dp = np.loadtxt("postProcessing/inletPressure/0/surfaceFieldValue.dat", comments="#", ndmin=2)
     end = t_dp[-1, 0]
@@ -131,6 +148,7 @@ def main():
               "bed_height_m": height}
     kinds = (("voidfraction", void_fraction_profiles(start), "voidfraction"),
              ("particleVelocity", velocity_profiles(start), "vz_m_s"))
+    u = inlet_velocity()
     print("averages over %.4g to %.4g s:" % (start, end))
     print("    pressure drop %.4g Pa, bed weight per area %.4g Pa (ratio %.4g); bed height (twice the "
           "particles' mean height) %.4g mm" % (dp, weight, dp/weight, 1000*height))
@@ -141,39 +159,55 @@ def main():
             halves = np.abs(averages["first half"] - averages["second half"]).mean()
             result[name + "_mean"] = averages["all"].mean()
             result[name + "_halves"] = halves
-            print("    %s at %.1f mm: mean %.4g, halves differ by %.3g on average"
-                  % (kind, 1000*h, averages["all"].mean(), halves))
+            line = "    %s at %.1f mm: mean %.4g, halves differ by %.3g on average" % (
+                kind, 1000*h, averages["all"].mean(), halves)
+            points = measured_points(kind, u, h)
+            if points is not None:
+                result[name + "_mad"], result[name + "_bias"] = measurement.difference(points, x, averages["all"])
+                line += "; from the measurement: %.3g on average, %+.3g signed" % (
+                    result[name + "_mad"], result[name + "_bias"])
+            print(line)
     with open("muellerBed.result", "w") as f:
         f.writelines("%s %.8g\n" % kv for kv in result.items())
-    plot(kinds)
+    plot(kinds, u)
     print("profiles in postProcessing/profiles/, plot muellerBed.png")
 
 
-def plot(kinds):
+def measured_points(kind, u, h):
+    return measurement.measured(kind, u, label(h)) if u is not None else None
+
+
+def plot(kinds, u):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     model = re.search(r"(?m)^voidFractionModel\s+(\w+);", open("constant/couplingProperties").read()).group(1)
-    fig, axes = plt.subplots(2, 2, figsize=(9, 6.5), sharex=True)
-    for col, (kind, profiles, column) in enumerate(kinds):
-        for row, (h, (x, averages)) in enumerate(sorted(profiles.items(), reverse=True)):
-            ax = axes[row, col]
-            for half in ("first half", "second half"):
-                ax.plot(1000*x, averages[half], lw=0.8, alpha=0.5, label=half)
-            ax.plot(1000*x, averages["all"], "k-", lw=1.6, label=model)
-            measured = os.path.join("measured", "%s_%s.csv" % (kind, label(h)))
-            if os.path.isfile(measured):
-                m = np.loadtxt(measured, delimiter=",", skiprows=1, ndmin=2)
-                ax.plot(1000*m[:, 0], m[:, 1], "o", mfc="none", label="measured")
-            ax.set_title("%.1f mm above the distributor" % (1000*h), fontsize=10)
-            ax.set_ylabel({"voidfraction": "void fraction", "particleVelocity": "particle v_z (m/s)"}[kind])
-            ax.grid(alpha=0.3)
-    for ax in axes[1]:
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4), sharex=True)
+    (_, void, _), (_, velocity, _) = kinds
+    panels = [(axes[0], "voidfraction", HEIGHTS[1:]), (axes[1], "voidfraction", HEIGHTS[:1]),
+              (axes[2], "particleVelocity", VELOCITY_HEIGHTS)]
+    for ax, kind, heights in panels:
+        profiles = void if kind == "voidfraction" else velocity
+        for i, h in enumerate(heights):
+            x, averages = profiles[h]
+            colour = "k" if len(heights) == 1 else "C%d" % i
+            if len(heights) == 1:
+                for half in ("first half", "second half"):
+                    ax.plot(1000*x, averages[half], lw=0.8, alpha=0.5, label=half)
+            ax.plot(1000*x, averages["all"], "-", color=colour, lw=1.6,
+                    label=model if len(heights) == 1 else "%s, %.0f mm" % (model, 1000*h))
+            points = measured_points(kind, u, h)
+            if points is not None:
+                ax.plot(1000*points[:, 0], points[:, 1], "o", color=colour, mfc="none",
+                        label="measured" if len(heights) == 1 else "measured, %.0f mm" % (1000*h))
+        ax.set_title(("%s mm above the distributor" if len(heights) == 1 else "at %s mm") % " / ".join(
+            "%.1f" % (1000*h) for h in heights), fontsize=10)
+        ax.set_ylabel({"voidfraction": "void fraction", "particleVelocity": "particle v_z (m/s)"}[kind])
         ax.set_xlabel("x from the left wall (mm)")
-    axes[0, 0].legend(fontsize=8)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig("muellerBed.png", dpi=110)
-
 
 if __name__ == "__main__":
     main()

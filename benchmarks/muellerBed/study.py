@@ -14,13 +14,17 @@ The plan: every model at both velocities on cells of 2.5 diameters, and
 centroid, analytical and kernel on cells of 1.5 and 4 diameters. --models,
 --velocities and --cells select a subset. --parcels 1.5,2 adds the same
 models as coarse-grained parcels of h^3 seeds (./Allrun parcels h ...,
-forceScaling cubic) on cells of 2.5 diameters, named <model>_2.5_U<U>_parcels<h>. --report writes results/table.md and
-results/profiles_U<U>.png; measured profiles placed in measured/ as
-voidfraction_U<U>_<height>.csv (x_m, voidfraction) add their mean absolute
-difference to the table and their points to the figures.
+forceScaling cubic) on cells of 2.5 diameters, named <model>_2.5_U<U>_parcels<h>.
+--report writes results/table.md (every run's mean absolute and signed
+difference from the measured profiles in measured/, and the runs ranked by
+their mean over the four void fraction profiles, beside sediFoam's published
+simulation in published/), results/profiles_U<U>.png and velocity_U<U>.png.
+
+--depth N runs the same plan with N fluid cells across the bed's depth and
+no-slip front and back walls, named <run>_depth<N>.
 
 usage: study.py [--models M,..] [--velocities 0.6,0.9] [--cells 2.5,1.5,4]
-                [--parcels 1.5,2] [--end 5] [--report]
+                [--parcels 1.5,2] [--depth 1] [--end 5] [--report]
 """
 import argparse
 import glob
@@ -37,25 +41,35 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 TUTORIAL = os.path.join(ROOT, "tutorials", "muellerBed")
 WORK = os.path.join(ROOT, "build", "muellerBed")
 RESULTS = os.path.join(HERE, "results")
-MEASURED = os.path.join(HERE, "measured")
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 from foamCase import sh  # noqa: E402
+import measurement  # noqa: E402
 
 MODELS = ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion")
 MESH_MODELS = ("centroid", "analytical", "kernel")
 
 
-def plan(models, velocities, cells, parcels):
+def plan(models, velocities, cells, parcels, depth):
     runs = []
     for c in cells:
         for m in models:
             if c == 2.5 or m in MESH_MODELS:
-                runs += [(m, u, c, 1) for u in velocities]
-    return runs + [(m, u, 2.5, h) for h in parcels for m in models for u in velocities]
+                runs += [(m, u, c, 1, depth) for u in velocities]
+    return runs + [(m, u, 2.5, h, depth) for h in parcels for m in models for u in velocities]
 
 
-def run_name(model, u, cells, h=1):
-    return "%s_%g_U%g%s" % (model, cells, u, "" if h == 1 else "_parcels%g" % h)
+def run_name(model, u, cells, h=1, depth=1):
+    return "%s_%g_U%g%s%s" % (model, cells, u, "" if h == 1 else "_parcels%g" % h,
+                              "" if depth == 1 else "_depth%d" % depth)
+
+
+def record_name(r):
+    return run_name(r["model"], r["U"], r["cells"], r.get("parcels", 1), r.get("depth", 1))
+
+
+def describe(r):
+    return "%s, %g d%s%s" % (r["model"], r["cells"], "" if r.get("parcels", 1) == 1 else ", parcels h = %g" % r["parcels"],
+                             "" if r.get("depth", 1) == 1 else ", %d cells deep" % r["depth"])
 
 
 def packing():
@@ -73,8 +87,8 @@ def packing():
     return restart
 
 
-def run(model, u, cells, h, end):
-    name = run_name(model, u, cells, h)
+def run(model, u, cells, h, depth, end):
+    name = run_name(model, u, cells, h, depth)
     case = os.path.join(WORK, name)
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(TUTORIAL, case, ignore=shutil.ignore_patterns(
@@ -82,9 +96,9 @@ def run(model, u, cells, h, end):
     os.makedirs(os.path.join(case, "DEM", "post"))
     shutil.copy(packing(), os.path.join(case, "DEM", "post"))
     began = time.time()
-    command = "./Allrun %s %g %g %g" % (model, u, cells, end)
+    command = "./Allrun %s %g %g %g 1 %d" % (model, u, cells, end, depth)
     if h != 1:
-        command = "./Allrun parcels %g %s %g %g %g" % (h, model, u, cells, end)
+        command = "./Allrun parcels %g %s %g %g %g 1 %d" % (h, model, u, cells, end, depth)
     rc, out = sh(command, case, check=False)
     wall = time.time() - began
     with open(os.path.join(case, "log.Allrun"), "w") as f:
@@ -94,7 +108,7 @@ def run(model, u, cells, h, end):
     if h != 1:
         case = os.path.join(case, "parcels_h%g" % h)
     record = {k: float(v) for k, v in (l.split() for l in open(os.path.join(case, "muellerBed.result")))}
-    record.update(model=model, U=u, cells=cells, parcels=h, wall_s=wall, wall_per_simulated_s=wall/end)
+    record.update(model=model, U=u, cells=cells, parcels=h, depth=depth, wall_s=wall, wall_per_simulated_s=wall/end)
     for path in glob.glob(os.path.join(case, "postProcessing", "profiles", "*.csv")):
         kind, height = os.path.basename(path)[:-4].split("_")
         prefix = "" if kind == "voidfraction" else kind + "_"
@@ -104,57 +118,137 @@ def run(model, u, cells, h, end):
     return name, record
 
 
-def measured(u, height):
-    path = os.path.join(MEASURED, "voidfraction_U%g_%s.csv" % (u, height))
+HEIGHTS = ("h16.4mm", "h31.2mm")
+VELOCITY_HEIGHTS = {0.6: ("h20.0mm",), 0.9: ("h15.0mm", "h25.0mm", "h35.0mm")}
+
+
+def profile(name, height, kind="voidfraction"):
+    path = os.path.join(RESULTS, "%s%s_%s.csv" % ("" if kind == "voidfraction" else kind + "_", name, height))
     return np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2) if os.path.isfile(path) else None
 
 
-def profile(model, u, cells, height, h=1):
-    path = os.path.join(RESULTS, "%s_%s.csv" % (run_name(model, u, cells, h), height))
-    return np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2) if os.path.isfile(path) else None
+def differences(u, kind, heights, simulated):
+    """[(MAD, signed)] from the measurement at each height, None where either is missing"""
+    found = []
+    for h in heights:
+        m, p = measurement.measured(kind, u, h), simulated(h)
+        found.append(measurement.difference(m, p[:, 0], p[:, 1]) if m is not None and p is not None else None)
+    return found
+
+
+def cells(found, i, fmt="%.3f"):
+    return " / ".join(fmt % f[i] if f else "n/a" for f in found)
+
+
+def table_rows(records):
+    rows = []
+    for r in records:
+        name = record_name(r)
+        void = differences(r["U"], "voidfraction", HEIGHTS, lambda h: profile(name, h))
+        velocity = differences(r["U"], "particleVelocity", VELOCITY_HEIGHTS[r["U"]],
+                               lambda h: profile(name, h, "particleVelocity"))
+        r["mad"] = [f[0] if f else None for f in void]
+        rows.append("| %s | %g | %g | %d | %g | %.3f | %.1f | %.3f / %.3f | %s | %s | %s | %.0f |" % (
+            r["model"], r["cells"], r.get("parcels", 1), r.get("depth", 1), r["U"], r["dp_over_weight"], 1000*r["bed_height_m"],
+            r["voidfraction_h16.4mm_halves"], r["voidfraction_h31.2mm_halves"], cells(void, 0),
+            cells(void, 1, "%+.3f"), cells(velocity, 0), r["wall_per_simulated_s"]))
+    return rows
+
+
+def published_rows(velocities):
+    rows = []
+    for u in velocities:
+        void = differences(u, "voidfraction", HEIGHTS,
+                           lambda h: measurement.published("sediFoam", "voidfraction", u, h))
+        velocity = differences(u, "particleVelocity", VELOCITY_HEIGHTS[u],
+                               lambda h: measurement.published("sediFoam", "particleVelocity", u, h))
+        rows.append("| sediFoam (published) | %s | 1 | 1 | %g | | | | %s | %s | %s | |" % (
+            {0.6: "1.7", 0.9: "3.3"}[u], u, cells(void, 0), cells(void, 1, "%+.3f"), cells(velocity, 0)))
+    return rows
+
+
+def ranking(records):
+    """mean MAD over the four measured profiles, per (model, cells, parcels) run at both velocities"""
+    runs = {}
+    for r in records:
+        runs.setdefault((r["model"], r["cells"], r.get("parcels", 1), r.get("depth", 1)), {})[r["U"]] = r["mad"]
+    scored = [(np.mean(m[0.6] + m[0.9]), key, m) for key, m in runs.items()
+              if set(m) == {0.6, 0.9} and None not in m[0.6] + m[0.9]]
+    sedi = [measurement.difference(measurement.measured("voidfraction", u, h), *measurement.published(
+        "sediFoam", "voidfraction", u, h).T)[0] for u in (0.6, 0.9) for h in HEIGHTS]
+    scored.append((np.mean(sedi), ("sediFoam (published)", float("nan"), 1, 1), {0.6: sedi[:2], 0.9: sedi[2:]}))
+    lines = ["| rank | model | cells (d) | parcels h | depth cells | mean MAD | 0.6 m/s: 16.4 / 31.2 mm"
+             " | 0.9 m/s: 16.4 / 31.2 mm |", "|---|---|---|---|---|---|---|---|"]
+    for i, (score, (model, c, h, depth), m) in enumerate(sorted(scored, key=lambda s: s[0])):
+        lines.append("| %d | %s | %s | %g | %d | %.3f | %.3f / %.3f | %.3f / %.3f |" % (
+            i + 1, model, "%g" % c if c == c else "1.7 / 3.3", h, depth, score, *m[0.6], *m[0.9]))
+    return lines
 
 
 def report():
     records = [json.load(open(p)) for p in sorted(glob.glob(os.path.join(RESULTS, "runs", "*.json")))]
-    records.sort(key=lambda r: (r["U"], r.get("parcels", 1), r["cells"], MODELS.index(r["model"])))
-    heights = ("h16.4mm", "h31.2mm")
-    lines = ["| model | cells (d) | parcels h | U (m/s) | dp / weight | bed height (mm) | halves differ (16.4 / 31.2 mm)"
-             " | MAD from measured (16.4 / 31.2 mm) | wall s per simulated s |",
-             "|---|---|---|---|---|---|---|---|---|"]
-    for r in records:
-        mads = []
-        for h in heights:
-            m, p = measured(r["U"], h), profile(r["model"], r["U"], r["cells"], h, r.get("parcels", 1))
-            mads.append("%.3f" % np.abs(np.interp(m[:, 0], p[:, 0], p[:, 1]) - m[:, 1]).mean()
-                        if m is not None and p is not None else "n/a")
-        lines.append("| %s | %g | %g | %g | %.3f | %.1f | %.3f / %.3f | %s | %.0f |" % (
-            r["model"], r["cells"], r.get("parcels", 1), r["U"], r["dp_over_weight"], 1000*r["bed_height_m"],
-            r["voidfraction_h16.4mm_halves"], r["voidfraction_h31.2mm_halves"], " / ".join(mads),
-            r["wall_per_simulated_s"]))
+    records.sort(key=lambda r: (r["U"], r.get("parcels", 1), r.get("depth", 1), r["cells"], MODELS.index(r["model"])))
+    lines = ["| model | cells (d) | parcels h | depth cells | U (m/s) | dp / weight | bed height (mm) | halves differ (16.4 / 31.2 mm)"
+             " | MAD from measured (16.4 / 31.2 mm) | signed (16.4 / 31.2 mm) | v_z MAD (m/s, at each measured height)"
+             " | wall s per simulated s |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines += table_rows(records) + published_rows(sorted({r["U"] for r in records})) + [""] + ranking(records)
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
+    plot(records)
+
+
+def plot(records):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     for u in sorted({r["U"] for r in records}):
-        fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
-        for ax, h in zip(axes, heights):
+        fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), sharey=True)
+        for ax, h in zip(axes, HEIGHTS):
             for r in (r for r in records if r["U"] == u):
-                h_p = r.get("parcels", 1)
-                p = profile(r["model"], u, r["cells"], h, h_p)
-                ax.plot(1000*p[:, 0], p[:, 1], "--" if h_p != 1 else "-" if r["cells"] == 2.5 else ":", lw=1.2,
-                        label="%s, %g d%s" % (r["model"], r["cells"], "" if h_p == 1 else ", parcels h = %g" % h_p))
-            m = measured(u, h)
+                p = profile(record_name(r), h)
+                style = "--" if r.get("parcels", 1) != 1 or r.get("depth", 1) != 1 else "-" if r["cells"] == 2.5 else ":"
+                ax.plot(1000*p[:, 0], p[:, 1], style, lw=1.2,
+                        label="%s (MAD %.3f)" % (describe(r), r["mad"][HEIGHTS.index(h)] or float("nan")))
+            s = measurement.published("sediFoam", "voidfraction", u, h)
+            if s is not None:
+                ax.plot(1000*s[:, 0], s[:, 1], color="0.5", lw=2.5, alpha=0.5, label="sediFoam (published)")
+            m = measurement.measured("voidfraction", u, h)
             if m is not None:
                 ax.plot(1000*m[:, 0], m[:, 1], "ko", mfc="none", label="measured")
             ax.set_title("U = %g m/s, %s above the distributor" % (u, h[1:].replace("mm", " mm")), fontsize=10)
             ax.set_xlabel("x from the left wall (mm)")
             ax.grid(alpha=0.3)
+            ax.legend(fontsize=6)
         axes[0].set_ylabel("time-averaged void fraction")
-        axes[1].legend(fontsize=7)
         fig.tight_layout()
         fig.savefig(os.path.join(RESULTS, "profiles_U%g.png" % u), dpi=110)
+        plt.close(fig)
+        plot_velocity(records, u, plt)
+
+
+def plot_velocity(records, u, plt):
+    heights = VELOCITY_HEIGHTS[u]
+    fig, axes = plt.subplots(1, len(heights), figsize=(4.5*len(heights) + 1, 4), sharey=True, squeeze=False)
+    for ax, h in zip(axes[0], heights):
+        for r in (r for r in records if r["U"] == u):
+            p = profile(record_name(r), h, "particleVelocity")
+            if p is not None:
+                ax.plot(1000*p[:, 0], p[:, 1], lw=1.2, label=describe(r))
+        s = measurement.published("sediFoam", "particleVelocity", u, h)
+        if s is not None:
+            ax.plot(1000*s[:, 0], s[:, 1], color="0.5", lw=2.5, alpha=0.5, label="sediFoam (published)")
+        m = measurement.measured("particleVelocity", u, h)
+        ax.plot(1000*m[:, 0], m[:, 1], "ko", mfc="none", label="measured")
+        ax.set_title("U = %g m/s, %s above the distributor" % (u, h[1:].replace("mm", " mm")), fontsize=10)
+        ax.set_xlabel("x from the left wall (mm)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=6)
+    axes[0][0].set_ylabel("time-averaged particle v_z (m/s)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(RESULTS, "velocity_U%g.png" % u), dpi=110)
+    plt.close(fig)
 
 
 def main():
@@ -163,6 +257,7 @@ def main():
     parser.add_argument("--velocities", default="0.6,0.9")
     parser.add_argument("--cells", default="2.5,1.5,4")
     parser.add_argument("--parcels", default="")
+    parser.add_argument("--depth", type=int, default=1, help="fluid cells across the depth (no-slip front and back)")
     parser.add_argument("--end", type=float, default=5.0)
     parser.add_argument("--report", action="store_true")
     args = parser.parse_args()
@@ -170,12 +265,12 @@ def main():
     if not args.report:
         todo = [r for r in plan(args.models.split(","), [float(u) for u in args.velocities.split(",")],
                                 [float(c) for c in args.cells.split(",") if c],
-                                [float(h) for h in args.parcels.split(",") if h])
+                                [float(h) for h in args.parcels.split(",") if h], args.depth)
                 if not os.path.isfile(os.path.join(RESULTS, "runs", run_name(*r) + ".json"))]
-        for i, (model, u, cells, h) in enumerate(todo):
-            print("[%d/%d] %s, U = %g m/s, cells of %g d%s, %g s" % (
-                i + 1, len(todo), model, u, cells, "" if h == 1 else ", parcels h = %g" % h, args.end), flush=True)
-            name, record = run(model, u, cells, h, args.end)
+        for i, (model, u, cells, h, depth) in enumerate(todo):
+            print("[%d/%d] %s, U = %g m/s, %g s" % (i + 1, len(todo), describe(
+                dict(model=model, cells=cells, parcels=h, depth=depth)), u, args.end), flush=True)
+            name, record = run(model, u, cells, h, depth, args.end)
             print("    dp / weight %.4g, bed height %.4g mm, %.4g wall s per simulated s"
                   % (record["dp_over_weight"], 1000*record["bed_height_m"], record["wall_per_simulated_s"]),
                   flush=True)

@@ -328,7 +328,9 @@ def test_dump_series():
             ("files dump.*, every snapshot", "demVoidFraction -dump 'dump.*' -deltaT 1e-5",
              ("0", "0.001", "0.002"), [0, 1, 2]),
             ("-latest", "demVoidFraction -dump all.dump -latest", ("200",), [2]),
-            ("-time 100", "demVoidFraction -dump all.dump -time 100", ("100",), [1])):
+            ("-time 100", "demVoidFraction -dump all.dump -time 100", ("100",), [1]),
+            ("-time 50:150", "demVoidFraction -dump all.dump -time 50:150", ("100",), [1]),
+            ("-time :50,150:", "demVoidFraction -dump all.dump -time :50,150:", ("0", "200"), [0, 2])):
         sh("rm -rf 0 0.00* 100 200", case)
         rc, out = sh(cmd, case, check=False)
         got = fields(times)
@@ -340,6 +342,19 @@ def test_dump_series():
         check("%s: progress per snapshot" % label, out.count("Snapshot ") == len(times))
     rc, out = sh("demVoidFraction -dump all.dump -time 50", case, check=False)
     check("-time selecting nothing: error", rc != 0 and "none of the 3 snapshots" in out)
+    for option, needle in (("-deltaT nan", "-deltaT 'nan': not a finite number"),
+                           ("-deltaT 1e999", "-deltaT '1e999': out of the range"),
+                           ("-deltaT 1e-5s", "-deltaT '1e-5s': not a number"),
+                           ("-deltaT 0", "-deltaT 0: must be positive"),
+                           ("-repeat inf", "-repeat 'inf': not a finite number"),
+                           ("-repeat 2.5", "-repeat '2.5': not a whole number"),
+                           ("-repeat -1", "-repeat '-1': not a whole number"),
+                           ("-time nan", "-time 'nan': not a finite number"),
+                           ("-time 0:abc", "-time 'abc': not a number"),
+                           ("-time :", "without bounds")):
+        rc, out = sh("demVoidFraction -dump all.dump %s" % option, case, check=False)
+        ok = rc == 1 and needle in out and "printStack" not in out
+        check("%s: error says \"%s\", no stack trace" % (option, needle), ok, "" if ok else out[-400:])
     # on 2 ranks, each keeping the particles near its cells (one distributor
     # for the whole series)
     sh("rm -rf 0 0.00* 100 200 processor*", case)

@@ -242,11 +242,42 @@ def test_bad_input():
           os.path.isdir(os.path.join(case, "system")), out[-300:] if rc == 0 else "")
     rc, out = sh("scaleCase -factor -1 -output %s-neg" % case, case, check=False)
     check("negative factor: refused", rc != 0 and "must be positive" in out, out[-300:] if rc == 0 else "")
+    for text, needle in (("nan", "not a finite number"), ("inf", "not a finite number"),
+                         ("1e999", "out of the range"), ("2x", "not a number"), ("two", "not a number")):
+        rc, out = sh("scaleCase -factor %s -output %s-bad" % (text, case), case, check=False)
+        ok = rc == 1 and "-factor '%s': %s" % (text, needle) in out and "printStack" not in out
+        check("-factor %s: error names the option and says '%s', no stack trace" % (text, needle),
+              ok, "" if ok else out[-400:])
+
+
+def test_run_bits():
+    print("scaleCase: the copy keeps the run bit of every executable file")
+    case = tutorial("settlingSphere", "scale-modes")
+    os.makedirs(os.path.join(case, "tools"), exist_ok=True)
+    with open(os.path.join(case, "tools", "plot.sh"), "w") as f:
+        f.write("#!/bin/sh\necho plotted\n")
+    os.chmod(os.path.join(case, "tools", "plot.sh"), 0o750)
+    executable = sorted(os.path.relpath(os.path.join(d, f), case) for d, _, files in os.walk(case) for f in files
+                        if os.access(os.path.join(d, f), os.X_OK))
+    for option in ("", " -parcels cubic"):
+        out = case + "-h2"
+        rc, text = sh("scaleCase -factor 2%s -output %s -overwrite" % (option, out), case, check=False)
+        copied = sorted(os.path.relpath(os.path.join(d, f), out) for d, _, files in os.walk(out) for f in files
+                        if os.access(os.path.join(d, f), os.X_OK))
+        check("scaleCase%s: the same %d executable files (Allrun, Allclean, tools/plot.sh) in the copy"
+              % (option, len(executable)), rc == 0 and copied == executable and "tools/plot.sh" in copied,
+              "(source %s, copy %s)" % (executable, copied))
+        modes = [os.stat(os.path.join(out, f)).st_mode & 0o777 == os.stat(os.path.join(case, f)).st_mode & 0o777
+                 for f in ("Allrun", "tools/plot.sh", "system/controlDict")]
+        check("scaleCase%s: permissions as the source's (Allrun, tools/plot.sh 750, controlDict)" % option,
+              rc == 0 and all(modes), str(modes))
+        rc, text = sh("./Allclean", out, check=False)
+        check("scaleCase%s: ./Allclean runs in the copy" % option, rc == 0, text[-300:])
 
 
 def main():
     checks.run([test_written_values, test_settling_sphere, test_packed_bed, test_fluidised_bed,
-                test_parcel_parameters, test_compression_precision, test_bad_input], sys.argv[1:])
+                test_parcel_parameters, test_compression_precision, test_bad_input, test_run_bits], sys.argv[1:])
     return checks.summary("scaling")
 
 

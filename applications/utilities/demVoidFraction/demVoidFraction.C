@@ -41,6 +41,7 @@ Usage
 #include "particleDistributor.H"
 #include "liggghtsCoupling.H"
 #include "scalarRanges.H"
+#include "numericOption.H"
 #include "dumpSnapshots.H"
 #include "snapshotMapper.H"
 
@@ -116,11 +117,13 @@ namespace
     )
     {
         using namespace Foam;
-        const scalar deltaT = args.getOrDefault<scalar>("deltaT", 1);
-        const scalarRanges times
-        (
-            args.found("time") ? scalarRanges::parse(args["time"]) : scalarRanges()
-        );
+        const scalar deltaT = finiteOption(args, "deltaT", 1);
+        if (!(deltaT > 0))
+        {
+            FatalErrorInFunction
+                << "-deltaT " << deltaT << ": must be positive" << exit(FatalError);
+        }
+        const scalarRanges times(rangesOption(args, "time"));
         const bool latest = args.found("latest");
         label nSeen = 0, nMapped = 0;
         while (ahead.size())

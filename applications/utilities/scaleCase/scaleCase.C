@@ -47,6 +47,7 @@ Usage
 #include "argList.H"
 #include "OSspecific.H"
 #include "caseScaler.H"
+#include "numericOption.H"
 
 using namespace Foam;
 
@@ -58,6 +59,20 @@ namespace
         return (readScalar(name, t) && name != "0")
             || name.startsWith("processor") || name.startsWith("log.")
             || name == "postProcessing" || name == "VTK";
+    }
+
+    // Foam::cp copies contents only: give each copied file its source's
+    // permissions, so that Allrun and Allclean stay executable
+    void keepModes(const fileName& source, const fileName& copy)
+    {
+        for (const fileName& f : readDir(source, fileName::FILE, false))
+        {
+            if (isFile(copy/f, false)) chMod(copy/f, mode(source/f, false));
+        }
+        for (const fileName& d : readDir(source, fileName::DIRECTORY, false))
+        {
+            if (isDir(copy/d)) keepModes(source/d, copy/d);
+        }
     }
 }
 
@@ -76,7 +91,7 @@ int main(int argc, char *argv[])
     );
     #include "setRootCase.H"
 
-    const scalar h = args.get<scalar>("factor");
+    const scalar h = finiteOption(args, "factor");
     if (!(h > 0))
     {
         FatalErrorInFunction << "-factor " << h << ": must be positive" << exit(FatalError);
@@ -113,6 +128,7 @@ int main(int argc, char *argv[])
             }
         }
     }
+    keepModes(sourceAbs, outputAbs);
     if (isDir(outputAbs/"DEM"/"post")) rmDir(outputAbs/"DEM"/"post");
 
     if (args.found("parcels"))

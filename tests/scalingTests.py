@@ -16,7 +16,7 @@ import numpy as np
 import checks
 from checks import WORK, check, near
 from foamCase import sh
-from couplingTests import copy_tutorial as tutorial, coupling_forces, edit
+from couplingTests import check_coupling_log, copy_tutorial as tutorial, coupling_forces, edit
 
 def scaled(case, h):
     out = "%s-h%g" % (case, h)
@@ -153,7 +153,7 @@ def test_parcel_parameters():
     }
     for (h, law), want in expect.items():
         out = "%s-parcels-h%d-%s" % (case, h, law)
-        rc, text = sh("scaleCase -factor %d -parcels %s -output %s -overwrite" % (h, law, out), case, check=False)
+        rc, text = sh("scaleCase -factor %d -parcels %s -keepMesh -output %s -overwrite" % (h, law, out), case, check=False)
         check("h = %d, %s: scaleCase ran" % (h, law), rc == 0, text[-500:] if rc else "")
         if rc:
             continue
@@ -180,10 +180,83 @@ def test_parcel_parameters():
     log = open(os.path.join(out, "log.pimpleDEMFoam")).read() if os.path.isfile(os.path.join(out, "log.pimpleDEMFoam")) else ""
     check("h = 2 parcels: 1250 packed and coupled 0.02 s, 2 fluid steps per coupling",
           rc == 0 and "1250 particles" in log and "10 DEM steps and 2 fluid steps per coupling" in log, text[-400:] if rc else "")
-    rc, text = sh("scaleCase -factor 2 -parcels cubic -output %s-again -overwrite" % case, out, check=False)
+    rc, text = sh("scaleCase -factor 2 -parcels cubic -keepMesh -output %s-again -overwrite" % case, out, check=False)
     check("a case that already has coarseGraining: refused", rc != 0 and "already has coarseGraining" in text)
-    rc, text = sh("scaleCase -factor 0.5 -parcels cubic -output %s-half -overwrite" % case, case, check=False)
+    rc, text = sh("scaleCase -factor 0.5 -parcels cubic -keepMesh -output %s-half -overwrite" % case, case, check=False)
     check("-parcels with h < 1: refused", rc != 0 and "h^3 >= 1" in text)
+
+
+def test_coarsened_fluid():
+    print("scaleCase -parcels: the fluid coarsened with the parcels (the fluidised bed, h = 2 and 3)")
+    case = tutorial("fluidisedBed", "coarse-source")
+    sh("sed -e 's/NX/16/g; s/NY/2/g; s/NZP/2/g; s/NZ/40/g' system/blockMeshDict.template > system/blockMeshDict",
+       case)
+    # worked by hand: counts round(n/h), one cell stays one; deltaT 1e-4 h; the coupling time
+    # 10 x 1e-5 x h in ceil(time / (1e-5 h^1.5)) DEM steps (the cubic law's step, Eq. 17)
+    expect = {2: ("(8 1 1)", "(8 1 20)", 2e-4, 8, 2.5e-5, 500), 3: ("(5 1 1)", "(5 1 13)", 3e-4, 6, 5e-5, 333)}
+    for h, (plenum, bed, dt, interval, dem, write) in expect.items():
+        out = "%s-h%d" % (case, h)
+        rc, text = sh("scaleCase -factor %d -parcels cubic -output %s -overwrite" % (h, out), case, check=False)
+        check("h = %d: scaleCase ran" % h, rc == 0, text[-600:] if rc else "")
+        if rc:
+            continue
+        blocks = re.findall(r"hex \([^)]*\) (\([^)]*\))", open(os.path.join(out, "system", "blockMeshDict")).read())
+        check("h = %d: blocks %s and %s, as printed" % (h, plenum, bed),
+              blocks == [plenum, bed] and "cells (16 2 2) -> %s" % plenum in text
+              and "cells (16 2 40) -> %s" % bed in text, "(%s)" % blocks)
+        control = open(os.path.join(out, "system", "controlDict")).read()
+        got_dt = float(re.search(r"(?m)^deltaT\s+(\S+);", control).group(1))
+        got_write = int(re.search(r"(?m)^writeInterval\s+(\S+);", control).group(1))
+        check("h = %d: deltaT %g, writeInterval %d, as printed" % (h, dt, write),
+              abs(got_dt - dt) < 1e-15 and got_write == write and "-> %g s" % dt in text, "(%g, %d)" % (got_dt, got_write))
+        props = open(os.path.join(out, "constant", "couplingProperties")).read()
+        got_interval = int(re.search(r"(?m)^couplingInterval\s+(\d+);", props).group(1))
+        got_dem = float(re.search(r"(?m)^variable\s+demStep\s+equal\s+(\S+)",
+                                  open(os.path.join(out, "DEM", "in.parameters")).read()).group(1))
+        check("h = %d: couplingInterval %d of DEM steps %g (= deltaT), as printed" % (h, interval, dem),
+              got_interval == interval and abs(got_dem - dem) < 1e-15*dem + 1e-20
+              and "couplingInterval: 10 -> %d" % interval in text, "(%d, %g)" % (got_interval, got_dem))
+    # the h = 2 bed packed, coupled 0.03 s in serial and on 2 ranks from the same packing
+    out = "%s-h2" % case
+    edit(os.path.join(out, "system", "controlDict"), r"^endTime\s+\S+;", "endTime 0.03;")
+    # linear solvers converged to round-off, so that only the decomposition differs
+    edit(os.path.join(out, "system", "fvSolution"), r"tolerance 1e-8; relTol [0-9.]+;", "tolerance 1e-14; relTol 0;")
+    rc, text = sh("mkdir -p DEM/post && (cd DEM && liggghts -in in.packing -log post/log.packing "
+                  "-screen post/screen.packing) && cp -r 0.orig 0 && blockMesh > log.blockMesh && "
+                  "pimpleDEMFoam > log.serial 2>&1", out, check=False)
+    log = open(os.path.join(out, "log.serial")).read() if os.path.isfile(os.path.join(out, "log.serial")) else ""
+    check("h = 2: 1250 parcels coupled on 168 cells, 8 DEM steps and 1 fluid step per coupling",
+          rc == 0 and "nCells: 168" in open(os.path.join(out, "log.blockMesh")).read()
+          and "8 DEM steps and 1 fluid steps per coupling" in log and "1250 particles" in log, text[-400:])
+    check_coupling_log("h = 2, coarsened fluid", os.path.join(out, "log.serial"), 0.2)
+    serial = coupling_forces(os.path.join(out, "log.serial"))
+    sh("rm -rf 0.0* processor*", out)
+    rc, text = sh("decomposePar -force > log.decomposePar && timeout 300 mpirun -np 2 pimpleDEMFoam -parallel "
+                  "> log.parallel 2>&1", out, check=False)
+    check("h = 2: the same bed on 2 ranks completed", rc == 0, text[-400:] if rc else "")
+    parallel = coupling_forces(os.path.join(out, "log.parallel")) if rc == 0 else []
+    same = len(parallel) == len(serial) > 100 and all(
+        abs(a - b) <= 1e-7*abs(b) for s, p in zip(serial, parallel) for a, b in zip(p[1], s[1]))
+    check("h = 2: total fluid force on the parcels at all %d couplings, 2 ranks = serial to the 8 digits logged"
+          % len(serial), same and max(p[0] for p in parallel) < 1250, "(%d and %d couplings)" % (len(serial), len(parallel)))
+    # what it cannot coarsen: an error naming -keepMesh
+    bad = [("a template's counts", lambda c: os.remove(os.path.join(c, "system", "blockMeshDict")),
+            "blockMeshDict.template"),
+           ("counts that are not numbers", lambda c: edit(os.path.join(c, "system", "blockMeshDict"),
+                                                          r"\(16 2 40\)", "(16 2 NZ)"), "not three whole numbers"),
+           ("a nonuniform field", lambda c: edit(os.path.join(c, "0.orig", "p"), r"internalField\s+uniform\s+0;",
+                                                 "internalField nonuniform List<scalar> 1(0);"), "nonuniform")]
+    for name, spoil, needle in bad:
+        c = case + "-bad"
+        shutil.rmtree(c, ignore_errors=True)
+        shutil.copytree(case, c)
+        spoil(c)
+        rc, text = sh("scaleCase -factor 2 -parcels cubic -output %s-h2 -overwrite" % c, c, check=False)
+        ok = rc == 1 and needle in text and "-keepMesh" in text
+        check("%s: error says '%s' and names -keepMesh" % (name, needle), ok, "" if ok else text[-500:])
+    rc, text = sh("scaleCase -factor 5 -parcels cubic -output %s-h5 -overwrite" % case, case, check=False)
+    ok = rc == 1 and "2 cells in direction 1, which would round to none" in text
+    check("h = 5: the depth's 2 cells would round to none: error naming the block", ok, "" if ok else text[-500:])
 
 
 def test_compression_precision():
@@ -277,7 +350,7 @@ def test_run_bits():
 
 def main():
     checks.run([test_written_values, test_settling_sphere, test_packed_bed, test_fluidised_bed,
-                test_parcel_parameters, test_compression_precision, test_bad_input, test_run_bits], sys.argv[1:])
+                test_parcel_parameters, test_coarsened_fluid, test_compression_precision, test_bad_input, test_run_bits], sys.argv[1:])
     return checks.summary("scaling")
 
 

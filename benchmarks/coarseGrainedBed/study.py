@@ -4,7 +4,7 @@
 
 The fine system is tutorials/fluidisedBed (10,000 glass beads of 1 mm in
 air, a 48 x 6 mm slice periodic in x and y, cells of 3 mm, inlet 1 m/s).
-Each coarse system is `scaleCase -factor h -parcels <law>` of it: parcels of
+Each coarse system is `scaleCase -factor h -parcels <law> -keepMesh` of it: parcels of
 h^3 beads on the same mesh, the drag scaled by h^3 (cubic) or h^2 (exact).
 Each run packs its bed with LIGGGHTS, runs pimpleDEMFoam serially and
 records:
@@ -78,7 +78,7 @@ def make_case(case, model, h, law, ramp, end):
             "[1-9]*", "0.[0-9]*", "0", "postProcessing", "VTK", "log.*", "parcels_h*", "stress",
             "processor*", "*.png", "*.result", "post"))
     else:
-        shell("scaleCase -factor %g -parcels %s -output %s -overwrite" % (h, law, case), TUTORIAL,
+        shell("scaleCase -factor %g -parcels %s -keepMesh -output %s -overwrite" % (h, law, case), TUTORIAL,
               os.path.join(WORK, "log.scaleCase." + os.path.basename(case)))
     os.makedirs(os.path.join(case, "DEM", "post"), exist_ok=True)
     sed = "; ".join("s/%s/%d/g" % (k, v) for k, v in sorted(MESH.items(), key=lambda kv: -len(kv[0])))

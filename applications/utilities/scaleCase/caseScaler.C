@@ -6,6 +6,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "caseScaler.H"
+#include "caseFiles.H"
+#include "fluidCoarsener.H"
 #include "exactScaling.H"
 #include "IFstream.H"
 #include "OFstream.H"
@@ -53,21 +55,13 @@ Foam::caseScaler::caseScaler(const fileName& dir, const scalar h)
 
 Foam::dictionary Foam::caseScaler::read(const fileName& file) const
 {
-    IFstream is(file);
-    if (!is.good())
-    {
-        FatalErrorInFunction << "cannot read " << file << exit(FatalError);
-    }
-    return dictionary(is, true);
+    return caseFiles::readDict(file);
 }
 
 
 void Foam::caseScaler::write(const fileName& file, const dictionary& dict) const
 {
-    OFstream os(file);
-    os.precision(15);
-    os  << "// written by scaleCase -factor " << h_ << nl << nl;
-    dict.write(os, false);
+    caseFiles::writeDict(file, dict, "scaleCase -factor " + name(h_));
 }
 
 
@@ -243,11 +237,7 @@ void Foam::caseScaler::scaleMesh() const
     {
         const fileName block(dir_/"system"/name);
         if (!isFile(block)) continue;
-        std::ifstream in(block);
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        in.close();
-        std::string text(buffer.str());
+        std::string text(caseFiles::readText(block));
         std::smatch m;
         std::ostringstream num;
         num.precision(15);
@@ -261,7 +251,7 @@ void Foam::caseScaler::scaleMesh() const
             num << h_;
             text += "\nscale " + num.str() + ";   // scaleCase\n";
         }
-        std::ofstream(block) << text;
+        caseFiles::writeText(block, text);
     }
     if (isFile(dir_/"constant"/"polyMesh"/"points"))
     {
@@ -425,7 +415,7 @@ void Foam::caseScaler::scaleDemData(const fileName& file) const
 }
 
 
-void Foam::caseScaler::makeParcels(const word& law) const
+void Foam::caseScaler::makeParcels(const word& law, const bool coarsenFluid) const
 {
     const bool exact = (law == "exact");
     if (!exact && law != "cubic")
@@ -440,16 +430,26 @@ void Foam::caseScaler::makeParcels(const word& law) const
         FatalErrorInFunction
             << coupling << " already has coarseGraining" << exit(FatalError);
     }
-    const scalar interval = couplingDict.get<label>("couplingInterval");
+    const label interval = couplingDict.get<label>("couplingInterval");
+    if (coarsenFluid) fluidCoarsener(dir_, h_).coarsen();
     const scalar deltaT = read(dir_/"system"/"controlDict").get<scalar>("deltaT");
     std::ofstream(coupling, std::ios::app)
         << "\ncoarseGraining { factor " << h_ << "; forceScaling " << law
         << "; }   // scaleCase -parcels\n";
 
-    // the DEM step the law allows, lowered so that the coupling time stays a
-    // whole multiple or fraction of the fluid step
-    auto commensurate = [&](const scalar allowed)
+    // The DEM step the law allows. On the fine mesh it is lowered so that
+    // the coupling time stays a whole multiple or fraction of the fluid
+    // step; with the fluid coarsened the coupling time is the fine one
+    // times h, taken in as few DEM steps as the law allows
+    label newInterval = interval;
+    auto demStep = [&](const scalar fine, const scalar allowed)
     {
+        if (coarsenFluid)
+        {
+            const scalar couplingTime = interval*fine*h_;
+            newInterval = max(label(std::ceil(couplingTime/allowed - 1e-9)), label(1));
+            return couplingTime/newInterval;
+        }
         const scalar one = deltaT/interval;
         return allowed >= one
             ? std::floor(allowed/one + 1e-9)*one
@@ -469,7 +469,7 @@ void Foam::caseScaler::makeParcels(const word& law) const
             {
                 // exact: h; the coarse grain model, contacts unscaled:
                 // h^3/2 (Zhang, Huang and Zhao 2021, Eq. 17)
-                v = commensurate(p.value*(exact ? h_ : std::pow(h_, 1.5)));
+                v = demStep(p.value, p.value*(exact ? h_ : std::pow(h_, 1.5)));
             }
             else if (p.roles.found("particle"))
             {
@@ -483,7 +483,32 @@ void Foam::caseScaler::makeParcels(const word& law) const
             return v;
         }
     );
+    if (coarsenFluid)
+    {
+        setCouplingInterval(newInterval);
+        Info<< "    couplingInterval: " << interval << " -> " << newInterval << " DEM steps"
+            << " (the coupling time times " << h_ << ", in DEM steps no longer than the"
+            << " law allows)" << nl;
+    }
     Info<< endl;
+}
+
+
+void Foam::caseScaler::setCouplingInterval(const label n) const
+{
+    const fileName file(dir_/"constant"/"couplingProperties");
+    const std::string text(caseFiles::readText(file));
+    const std::regex line("(^|\\n)(\\s*couplingInterval\\s+)\\d+(\\s*;)[^\\n]*");
+    std::smatch m;
+    if (!std::regex_search(text, m, line))
+    {
+        FatalErrorInFunction
+            << file << ": no line 'couplingInterval N;' to set" << exit(FatalError);
+    }
+    std::ostringstream with;
+    with << m.prefix().str() << m[1].str() << m[2].str() << n << m[3].str()
+        << "   // DEM steps (scaleCase -parcels)" << m.suffix().str();
+    caseFiles::writeText(file, with.str());
 }
 
 

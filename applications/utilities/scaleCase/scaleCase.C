@@ -33,14 +33,18 @@ Description
     scales by h.
 
     With -parcels cubic|exact it writes instead the same case with the
-    DEM's spheres made parcels of h^3 particles: the fluid as it is, a
-    coarseGraining dictionary in couplingProperties, and the DEM parameters
-    marked {particle}, {count} or {timestep} in DEM/in.parameters scaled by
-    the law (see caseScaler), the table printed.
+    DEM's spheres made parcels of h^3 particles: a coarseGraining
+    dictionary in couplingProperties, the DEM parameters marked {particle},
+    {count} or {timestep} in DEM/in.parameters scaled by the law (see
+    caseScaler), and the fluid coarsened with them: blockMeshDict's cell
+    counts divided by h, the fluid step and the coupling time times h
+    (see fluidCoarsener), every change printed. -keepMesh keeps the fluid's
+    mesh and steps (the parcels then see h times fewer cells each).
 
 Usage
     scaleCase -factor 2 -output ../bed-h2
     scaleCase -factor 2 -parcels cubic -output ../bed-parcels
+    scaleCase -factor 2 -parcels cubic -keepMesh -output ../bed-parcels-fine
 
 \*---------------------------------------------------------------------------*/
 
@@ -87,7 +91,12 @@ int main(int argc, char *argv[])
     (
         "parcels", "law",
         "instead: the same case with the DEM's spheres parcels of h^3"
-        " particles, forces scaled cubic or exact"
+        " particles, forces scaled cubic or exact, the fluid coarsened by h"
+    );
+    argList::addBoolOption
+    (
+        "keepMesh",
+        "with -parcels: keep the fluid's mesh, time step and coupling interval"
     );
     #include "setRootCase.H"
 
@@ -139,7 +148,7 @@ int main(int argc, char *argv[])
                 << "-factor " << h << ": a parcel stands for h^3 >= 1 particles"
                 << exit(FatalError);
         }
-        caseScaler(outputAbs, h).makeParcels(args.get<word>("parcels"));
+        caseScaler(outputAbs, h).makeParcels(args.get<word>("parcels"), !args.found("keepMesh"));
     }
     else
     {

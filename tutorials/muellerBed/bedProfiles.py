@@ -66,9 +66,31 @@ def read_probes():
     return rows[:, 0], np.array(points), rows[:, 1:]
 
 
+BLOCK = 0.5     # s: several bubble periods, for batch means
+
+
 def windows(t, start):
+    """masks of the averaging window (t > start), its halves, and its
+    consecutive blocks of BLOCK seconds"""
     mid = 0.5*(start + t[-1])
-    return {"all": t > start, "first half": (t > start) & (t <= mid), "second half": t > mid}
+    found = {"all": t > start, "first half": (t > start) & (t <= mid), "second half": t > mid}
+    for k in range(int((t[-1] - start)/BLOCK + 1e-9)):
+        found["block %d" % k] = (t > start + k*BLOCK) & (t <= start + (k + 1)*BLOCK)
+    return found
+
+
+def convergence(averages):
+    """(the halves' mean difference expected of a window of the run's
+    length, the window for which it would be 0.01) from batch means: with
+    blocks longer than a bubble's life independent, each profile point's
+    halves of a window T differ by sqrt(8/pi) s sqrt(BLOCK/T) on average,
+    s the spread of its block means"""
+    blocks = [v for k, v in averages.items() if k.startswith("block ")]
+    if len(blocks) < 3:
+        return float("nan"), float("nan")
+    spread = float(np.nanmean(np.std(np.array(blocks), axis=0, ddof=1)))
+    T = len(blocks)*BLOCK
+    return np.sqrt(8/np.pi)*spread*np.sqrt(BLOCK/T), BLOCK*8/np.pi*(spread/0.01)**2
 
 
 def void_fraction_profiles(start):
@@ -156,11 +178,15 @@ def main():
         for h, (x, averages) in profiles.items():
             name = "%s_%s" % (kind, label(h))
             write_csv("postProcessing/profiles/%s.csv" % name, x, averages["all"], column)
-            halves = np.abs(averages["first half"] - averages["second half"]).mean()
-            result[name + "_mean"] = averages["all"].mean()
+            halves = np.nanmean(np.abs(averages["first half"] - averages["second half"]))
+            result[name + "_mean"] = np.nanmean(averages["all"])
             result[name + "_halves"] = halves
-            line = "    %s at %.1f mm: mean %.4g, halves differ by %.3g on average" % (
-                kind, 1000*h, averages["all"].mean(), halves)
+            expected, needed = convergence(averages)
+            result[name + "_halves_expected"] = expected
+            result[name + "_window_for_0.01"] = needed
+            line = "    %s at %.1f mm: mean %.4g, halves differ by %.3g on average (%.3g expected from %g s blocks;" \
+                   " 0.01 after about %.3g s)" % (kind, 1000*h, np.nanmean(averages["all"]), halves, expected, BLOCK,
+                                                  needed)
             points = measured_points(kind, u, h)
             if points is not None:
                 result[name + "_mad"], result[name + "_bias"] = measurement.difference(points, x, averages["all"])

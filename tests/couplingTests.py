@@ -210,6 +210,68 @@ def test_serial_parallel():
     near("terminal velocity, 2 ranks / serial", par[-1, 2]/serial[-1, 2], 1.0, 1e-3)
 
 
+def parcel_types():
+    """two DEM types of parcels in one run, factor (2 3): a 2 mm parcel of 1 mm spheres and a
+    2.4 mm parcel of 0.8 mm spheres, each settling as one of its own particles (Schiller-Naumann),
+    and on 2 ranks, the mesh split across their paths, as in serial"""
+    case = copy_tutorial("settlingSphere", "parcel-types")
+    edit(os.path.join(case, "system", "blockMeshDict"), r"^scale\s+0.001;", "scale 0.002;")
+    edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+0.4;", "endTime 0.25;")
+    set_dem(case, boxWidth=0.08, boxHeight=0.192, releaseXY=0.04, releaseZ=0.097, diameter=2e-3)
+    dem = os.path.join(case, "DEM")
+    edit(os.path.join(dem, "in.liggghts"), r"^create_box\s+1 domain", "create_box      2 domain")
+    edit(os.path.join(dem, "in.liggghts"), r"^create_atoms.*\n(set .*)$",
+         "create_atoms    1 single 0.02 ${releaseXY} ${releaseZ} units box\n"
+         "create_atoms    2 single 0.06 ${releaseXY} ${releaseZ} units box\n"
+         "set             atom 1 diameter 0.002 density ${density}\n"
+         "set             atom 2 diameter 0.0024 density ${density}")
+    edit(os.path.join(dem, "in.liggghts"), r'^fix history .*$',
+         'fix history all print 10 "${t} ${zp} ${vzp} ${zp2} ${vzp2}" file post/history.txt screen no title "#"')
+    edit(os.path.join(dem, "in.settings"), r"^variable\s+vzp equal vz\[1\]$",
+         "variable        vzp equal vz[1]\nvariable        zp2 equal z[2]\nvariable        vzp2 equal vz[2]")
+    # the materials of the two types as the one type's
+    edit(os.path.join(dem, "in.settings"), r"(youngsModulus peratomtype) (\S+)$", r"\g<1> \g<2> \g<2>")
+    edit(os.path.join(dem, "in.settings"), r"(poissonsRatio peratomtype) (\S+)$", r"\g<1> \g<2> \g<2>")
+    for name in ("coefficientRestitution", "coefficientFriction"):
+        edit(os.path.join(dem, "in.settings"), r"(%s peratomtypepair) 1 (\S+)$" % name, r"\g<1> 2 \g<2> \g<2> \g<2> \g<2>")
+    with open(os.path.join(case, "constant", "couplingProperties"), "a") as f:
+        f.write("coarseGraining { factor (2 3); forceScaling cubic; }\n")
+    rc, out = sh("cp -r 0.orig 0 && blockMesh > log.blockMesh && pimpleDEMFoam > log.pimpleDEMFoam 2>&1",
+                 case, check=False)
+    log = open(os.path.join(case, "log.pimpleDEMFoam")).read()
+    check("factor (2 3): two types of parcels coupled, factors per type said", rc == 0 and "per DEM type" in log,
+          log[-600:] if rc else "")
+    if rc:
+        return
+    h = history(case)
+
+    def settling(diameter):
+        def excess(v):
+            re = rho_f*v*diameter/mu
+            return (rho_p - rho_f)*g*math.pi*diameter**3/6 - 0.5*cd_schiller_naumann(re)*rho_f*math.pi*diameter**2/4*v*v
+        return brentq(excess, 1e-5, 5.0)
+    near("type 1 (h = 2, 2 mm): settles as a 1 mm sphere (Schiller-Naumann)", -h[-1, 2]/settling(1e-3), 1.0, 0.02)
+    near("type 2 (h = 3, 2.4 mm): settles as a 0.8 mm sphere (Schiller-Naumann)", -h[-1, 4]/settling(0.8e-3), 1.0, 0.02)
+    check_coupling_log("two parcel types", os.path.join(case, "log.pimpleDEMFoam"), 0.99)
+    # both start across the split of a (1 1 2) decomposition at z = 96 mm and fall through it
+    edit(os.path.join(case, "system", "fvSolution"), r"tolerance 1e-10; relTol [0-9.]+;", "tolerance 1e-13; relTol 0;")
+    edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+\S+;", "endTime 0.1;")
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
+    sh("rm -rf 0.[0-9]* [1-9]* DEM/post/* && pimpleDEMFoam > log.serial 2>&1", case)
+    serial = history(case)
+    sh("rm -rf DEM/post/* 0.[0-9]*", case)
+    rc, out = sh("decomposePar -force > log.decomposePar && "
+                 "timeout 300 mpirun -np 2 pimpleDEMFoam -parallel > log.parallel 2>&1", case, check=False)
+    par = history(case) if rc == 0 else None
+    diff = (max(np.max(np.abs(par[:, k] - serial[:, k]))/np.max(np.abs(serial[:, k])) for k in (2, 4))
+            if par is not None and par.shape == serial.shape else float("nan"))
+    crossed = serial[0, 1] > 0.096 > serial[-1, 1] and serial[0, 3] > 0.096 > serial[-1, 3]
+    check("two parcel types on 2 ranks, both through the split: velocity histories equal to serial (1e-10)",
+          diff < 1e-10 and crossed, "(%.1e; z %.4f -> %.4f)" % (diff, serial[0, 1], serial[-1, 1]))
+
+
 def test_packed_bed():
     print("packedBedErgun tutorial: 3,500 spheres ramped through fluidisation")
     case = copy_tutorial("packedBedErgun", "packedBed")
@@ -417,6 +479,8 @@ def test_parcels():
             if rc == 0 else float("nan"))
     check("cubic parcel on 2 ranks: velocity history equal to serial (1e-10)", diff < 1e-10, "(%.1e)" % diff)
 
+    parcel_types()
+
     # centroid with parcels wider than a cell: said once
     case = copy_tutorial("settlingSphere", "parcel-centroid")
     set_dem(case, diameter=0.01)
@@ -429,7 +493,8 @@ def test_parcels():
           out[-400:] if rc else "")
     case = copy_tutorial("settlingSphere", "parcel-bad")
     sh("cp -r 0.orig 0 && blockMesh", case)
-    for body, needle in (("factor 0.5;", "is below 1"), ("factor (2 3);", "one number"),
+    for body, needle in (("factor 0.5;", "is below 1"), ("factor (2 3);", "has 2 values for the DEM's 1 particle types"),
+                         ("factor (2 0.5);", "(of type 2) is below 1"), ("factor ();", "is empty"),
                          ("factor 2; forceScaling quadratic;", "quadratic"), ("forceScaling cubic;", "has no factor")):
         props = os.path.join(case, "constant", "couplingProperties")
         text = open(props).read().split("coarseGraining")[0]
@@ -458,7 +523,8 @@ def test_mueller_bed():
           len(errors) > 1000 and max(errors) < 1e-9, "(%d steps, largest %.2e)" % (len(errors), max(errors or [0])))
     result = dict(l.split() for l in open(os.path.join(case, "muellerBed.result")))
     for kind, column, lo, hi, heights in (("voidfraction", "voidfraction", 0.2, 1.0, ("16.4", "31.2")),
-                                          ("particleVelocity", "vz_m_s", -5, 5, ("15.0", "20.0", "25.0", "35.0"))):
+                                          ("particleVelocity", "vz_m_s", -5, 5, ("15.0", "20.0", "25.0", "35.0")),
+                                          ("voidfractionSlice", "voidfraction", 0.2, 1.0, ("16.4", "31.2"))):
         for height in heights:
             path = os.path.join(case, "postProcessing", "profiles", "%s_h%smm.csv" % (kind, height))
             ok = os.path.isfile(path) and open(path).readline().strip() == "x_m," + column
@@ -467,7 +533,8 @@ def test_mueller_bed():
                   ok and len(data) >= 9 and np.isfinite(data).all() and data[:, 0].min() > 0
                   and data[:, 0].max() < 0.044 and data[:, 1].min() >= lo and data[:, 1].max() <= hi,
                   "(%d points, %.4g..%.4g)" % (len(data), data[:, 1].min(), data[:, 1].max()) if len(data) else "")
-            measured = os.path.join(ROOT, "benchmarks", "muellerBed", "measured", "%s_U0.9_h%smm.csv" % (kind, height))
+            measured = os.path.join(ROOT, "benchmarks", "muellerBed", "measured", "%s_U0.9_h%smm.csv"
+                                    % (kind.replace("Slice", ""), height))
             if not os.path.isfile(measured) or not len(data):
                 continue
             points = np.loadtxt(measured, delimiter=",", skiprows=1, ndmin=2)

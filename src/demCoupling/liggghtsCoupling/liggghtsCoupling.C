@@ -188,7 +188,7 @@ Foam::particleData Foam::liggghtsCoupling::particles(const bool inIdOrder) const
     List<point> x(n);
     List<vector> v(n);
     List<scalar> r(n);
-    List<label> id(n);
+    List<label> id(n), type(n);
     // an orthogonal box leaves a position within its periodic bounds as it
     // is: only the others go through remap
     const int periodic[3] = {domain.xperiodic, domain.yperiodic, domain.zperiodic};
@@ -214,9 +214,11 @@ Foam::particleData Foam::liggghtsCoupling::particles(const bool inIdOrder) const
         v[k] = vector(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
         r[k] = atom.radius[i];
         id[k] = label(atom.tag[i]);
+        type[k] = label(atom.type[i]);
     }
     particleData result(pointField(std::move(x)), scalarField(std::move(r)), std::move(id));
     result.setVelocities(vectorField(std::move(v)));
+    result.setTypes(std::move(type));
     return result;
 }
 
@@ -224,6 +226,12 @@ Foam::particleData Foam::liggghtsCoupling::particles(const bool inIdOrder) const
 Foam::label Foam::liggghtsCoupling::nParticles() const
 {
     return label(lmp_->atom->natoms);
+}
+
+
+Foam::label Foam::liggghtsCoupling::nTypes() const
+{
+    return label(lmp_->atom->ntypes);
 }
 
 

@@ -7,6 +7,7 @@
 
 #include "parcelScaling.H"
 #include "readChoice.H"
+#include <cmath>
 
 const Foam::Enum<Foam::parcelScaling::law> Foam::parcelScaling::lawNames
 ({
@@ -17,31 +18,68 @@ const Foam::Enum<Foam::parcelScaling::law> Foam::parcelScaling::lawNames
 
 Foam::parcelScaling::parcelScaling(const dictionary& couplingDict)
 :
-    h_(1),
+    h_(1, scalar(1)),
     law_(law::cubic)
 {
     const dictionary* dictPtr = couplingDict.findDict("coarseGraining");
     if (!dictPtr) return;
-    const dictionary& dict = *dictPtr;
-    const entry* factorEntry = dict.findEntry("factor", keyType::LITERAL);
+    dict_ = *dictPtr;
+    const entry* factorEntry = dict_.findEntry("factor", keyType::LITERAL);
     if (!factorEntry)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(dict_)
             << "coarseGraining has no factor (the parcel's radius per"
-            << " particle radius, h >= 1)" << exit(FatalIOError);
+            << " particle radius, h >= 1, or a list of one per DEM type)"
+            << exit(FatalIOError);
     }
-    if (factorEntry->stream().size() != 1)
+    ITstream& is = factorEntry->stream();
+    const bool list = is.size() > 1 && is[0].isPunctuation()
+        && is[0].pToken() == token::BEGIN_LIST;
+    if (!list && is.size() != 1)
     {
-        FatalIOErrorInFunction(dict)
-            << "coarseGraining factor must be one number; a factor per"
-            << " particle type is not supported" << exit(FatalIOError);
+        FatalIOErrorInFunction(dict_)
+            << "coarseGraining factor must be one number or a list (h1 h2 ...)"
+            << " of one per DEM type" << exit(FatalIOError);
     }
-    h_ = dict.get<scalar>("factor");
-    if (!(h_ >= 1))
+    h_ = list ? dict_.get<scalarList>("factor") : scalarList(1, dict_.get<scalar>("factor"));
+    if (h_.empty())
     {
-        FatalIOErrorInFunction(dict)
-            << "coarseGraining factor " << h_ << " is below 1: a parcel stands"
-            << " for h^3 >= 1 particles" << exit(FatalIOError);
+        FatalIOErrorInFunction(dict_)
+            << "coarseGraining factor () is empty: one factor per DEM type"
+            << exit(FatalIOError);
     }
-    law_ = readChoice(dict, "forceScaling", lawNames, law::cubic);
+    forAll(h_, t)
+    {
+        if (!(h_[t] >= 1) || !std::isfinite(h_[t]))
+        {
+            const std::string which(list ? " (of type " + std::to_string(t + 1) + ")" : "");
+            FatalIOErrorInFunction(dict_)
+                << "coarseGraining factor " << h_[t] << which.c_str()
+                << " is below 1 or not finite: a parcel stands for h^3 >= 1 particles"
+                << exit(FatalIOError);
+        }
+    }
+    law_ = readChoice(dict_, "forceScaling", lawNames, law::cubic);
+}
+
+
+bool Foam::parcelScaling::active() const
+{
+    for (const scalar h : h_)
+    {
+        if (h != 1) return true;
+    }
+    return false;
+}
+
+
+void Foam::parcelScaling::checkTypes(const label nTypes) const
+{
+    if (h_.size() != 1 && h_.size() != nTypes)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "coarseGraining factor " << h_ << " has " << h_.size()
+            << " values for the DEM's " << nTypes << " particle types: give one"
+            << " per type, or one number for all" << exit(FatalIOError);
+    }
 }

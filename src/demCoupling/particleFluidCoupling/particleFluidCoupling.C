@@ -179,8 +179,11 @@ void Foam::particleFluidCoupling::readForces()
 void Foam::particleFluidCoupling::checkParcels() const
 {
     if (!parcels_.active()) return;
+    parcels_.checkTypes(dem_->nTypes());
+    const scalarList& h = parcels_.factors();
     Info<< "particleFluidCoupling: coarse-grained parcels, factor "
-        << parcels_.factor() << ", forces scaled "
+        << (h.size() == 1 ? Foam::name(h[0]) : "per DEM type " + Foam::name(h.size()) + " values")
+        << " " << h << ", forces scaled "
         << parcelScaling::lawNames[parcels_.forceScaling()] << endl;
     // centroid puts a parcel's whole volume into one cell
     const scalar widest = 2*gMax(particles_.radii());
@@ -370,12 +373,13 @@ void Foam::particleFluidCoupling::beginStep
                 else
                 {
                     const scalar a = alphaP/s;
+                    const label type = particles_.type(i);
                     // a parcel: the law for one of its particles, scaled
-                    beta = parcels_.dragFactor()*drag_->beta
+                    beta = parcels_.dragFactor(type)*drag_->beta
                     (
                         {
-                            parcels_.particleDiameter(2*particles_.radii()[i]),
-                            parcels_.particleVolume(volumes[i]),
+                            parcels_.particleDiameter(2*particles_.radii()[i], type),
+                            parcels_.particleVolume(volumes[i], type),
                             a, mag(Up/s - v[i]), rho_, mu
                         }
                     );
@@ -426,7 +430,7 @@ void Foam::particleFluidCoupling::addFluidForces
     {
         const vector drag(beta_[i]*(Up - weightSum_[i]*v[i]));
         vector f(F[i] + drag);
-        const scalar volume = parcels_.volumeForceFactor()*volumes[i];
+        const scalar volume = parcels_.volumeForceFactor(particles_.type(i))*volumes[i];
         if (pressureGradientForce_ && weightSum_[i] > SMALL)
         {
             f -= rho_*volume*gradP/weightSum_[i];

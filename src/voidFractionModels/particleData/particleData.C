@@ -44,6 +44,18 @@ void Foam::particleData::setVelocities(vectorField&& velocities)
 }
 
 
+void Foam::particleData::setTypes(labelList&& types)
+{
+    if (types.size() != positions_.size())
+    {
+        FatalErrorInFunction
+            << types.size() << " types for " << positions_.size()
+            << " particles" << exit(FatalError);
+    }
+    types_ = std::move(types);
+}
+
+
 Foam::particleData Foam::particleData::reordered(const labelUList& order) const
 {
     particleData result
@@ -53,6 +65,7 @@ Foam::particleData Foam::particleData::reordered(const labelUList& order) const
         labelList(UIndirectList<label>(ids_, order))
     );
     if (velocities_.size()) result.setVelocities(vectorField(velocities_, order));
+    if (types_.size()) result.setTypes(labelList(UIndirectList<label>(types_, order)));
     return result;
 }
 

@@ -172,13 +172,16 @@ void Foam::particleDistributor::incomingParticles::exchange
     const pointField& x = owned.positions();
     const scalarField& r = owned.radii();
     const vectorField& v = owned.velocities();
+    const labelList& type = owned.types();
     const bool withU = (v.size() == owned.size() && owned.size());
+    const bool withTypes = (type.size() == owned.size() && owned.size());
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     receivedIds.setSize(nProcs);
     receivedFlags.setSize(nProcs);
     receivedX.setSize(nProcs);
     receivedR.setSize(nProcs);
     receivedU.setSize(nProcs);
+    receivedTypes.setSize(nProcs);
     forAll(subMap, rank)
     {
         const labelList& send = subMap[rank];
@@ -192,27 +195,30 @@ void Foam::particleDistributor::incomingParticles::exchange
         }
         UOPstream os(rank, buffers);
         os << ids << pointField(x, send) << scalarField(r, send)
-           << (withU ? vectorField(v, send) : vectorField()) << flags[rank];
+           << (withU ? vectorField(v, send) : vectorField())
+           << (withTypes ? labelList(UIndirectList<label>(type, send)) : labelList()) << flags[rank];
     }
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
     nHeld = 0;
     nWithU = 0;
+    nWithTypes = 0;
     forAll(receivedIds, rank)
     {
         if (rank != me && recvSizes[rank])
         {
             UIPstream is(rank, buffers);
             is >> receivedIds[rank] >> receivedX[rank] >> receivedR[rank] >> receivedU[rank]
-               >> receivedFlags[rank];
+               >> receivedTypes[rank] >> receivedFlags[rank];
         }
         nHeld += receivedIds[rank].size();
         nWithU += (rank == me && withU) ? receivedIds[rank].size() : receivedU[rank].size();
+        nWithTypes += (rank == me && withTypes) ? receivedIds[rank].size() : receivedTypes[rank].size();
     }
-    if (nWithU && nWithU != nHeld)
+    if ((nWithU && nWithU != nHeld) || (nWithTypes && nWithTypes != nHeld))
     {
         FatalErrorInFunction
-            << "some ranks' particles have velocities and others' not"
+            << "some ranks' particles have velocities or types and others' not"
             << abort(FatalError);
     }
 }
@@ -236,12 +242,13 @@ Foam::particleHolders Foam::particleDistributor::distribute
     const pointField& x = owned.positions();
     const scalarField& r = owned.radii();
     const vectorField& v = owned.velocities();
+    const labelList& type = owned.types();
     labelListList subMap(destinations(owned));
     const labelListList flags(particleHolders::sentFlags(owned.size(), subMap));
     incomingParticles in;
     in.exchange(owned, subMap, flags);
     const List<labelList>& receivedIds = in.receivedIds;
-    const label nHeld = in.nHeld, nWithU = in.nWithU;
+    const label nHeld = in.nHeld, nWithU = in.nWithU, nWithTypes = in.nWithTypes;
 
     labelList allIds(nHeld);
     label k = 0;
@@ -253,7 +260,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
     labelListList constructMap(nProcs);
     pointField heldX(nHeld);
     scalarField heldR(nHeld);
-    labelList heldIds(nHeld), heldFlags(nHeld);
+    labelList heldIds(nHeld), heldFlags(nHeld), heldTypes(nWithTypes);
     vectorField heldU(nWithU);
     k = 0;
     forAll(receivedIds, rank)
@@ -264,6 +271,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
         const pointField& fromX = mine ? x : in.receivedX[rank];
         const scalarField& fromR = mine ? r : in.receivedR[rank];
         const vectorField& fromU = mine ? v : in.receivedU[rank];
+        const labelList& fromType = mine ? type : in.receivedTypes[rank];
         labelList& construct = constructMap[rank];
         construct.setSize(receivedIds[rank].size());
         forAll(construct, i)
@@ -276,6 +284,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
             heldIds[to] = receivedIds[rank][i];
             heldFlags[to] = in.receivedFlags[rank][i];
             if (nWithU) heldU[to] = fromU[from];
+            if (nWithTypes) heldTypes[to] = fromType[from];
         }
     }
 
@@ -285,5 +294,6 @@ Foam::particleHolders Foam::particleDistributor::distribute
     );
     held = particleData(std::move(heldX), std::move(heldR), std::move(heldIds));
     if (nWithU) held.setVelocities(std::move(heldU));
+    if (nWithTypes) held.setTypes(std::move(heldTypes));
     return holders;
 }

@@ -143,6 +143,15 @@ def test_fluidised_bed():
               diff < 1e-6, "(%.1e of the largest)" % diff)
 
 
+def pack_and_run(case, log):
+    """pack the case's parcels with LIGGGHTS, mesh and couple it: (exit code, output, the solver's log)"""
+    rc, text = sh("mkdir -p DEM/post && (cd DEM && liggghts -in in.packing -log post/log.packing "
+                  "-screen post/screen.packing) && cp -r 0.orig 0 && blockMesh > log.blockMesh && "
+                  "pimpleDEMFoam > %s 2>&1" % log, case, check=False)
+    path = os.path.join(case, log)
+    return rc, text, open(path).read() if os.path.isfile(path) else ""
+
+
 def test_parcel_parameters():
     print("scaleCase -parcels: the DEM parameters of parcels of h^3 beads, and a short coupled run")
     case = tutorial("fluidisedBed", "parcels-source")
@@ -174,10 +183,7 @@ def test_parcel_parameters():
     out = "%s-parcels-h2-cubic" % case
     sh("sed -e 's/NX/16/g; s/NY/2/g; s/NZP/2/g; s/NZ/40/g' system/blockMeshDict.template > system/blockMeshDict", out)
     edit(os.path.join(out, "system", "controlDict"), r"^endTime\s+\S+;", "endTime 0.02;")
-    rc, text = sh("mkdir -p DEM/post && (cd DEM && liggghts -in in.packing -log post/log.packing "
-                  "-screen post/screen.packing) && cp -r 0.orig 0 && blockMesh > log.blockMesh && "
-                  "pimpleDEMFoam > log.pimpleDEMFoam 2>&1", out, check=False)
-    log = open(os.path.join(out, "log.pimpleDEMFoam")).read() if os.path.isfile(os.path.join(out, "log.pimpleDEMFoam")) else ""
+    rc, text, log = pack_and_run(out, "log.pimpleDEMFoam")
     check("h = 2 parcels: 1250 packed and coupled 0.02 s, 2 fluid steps per coupling",
           rc == 0 and "1250 particles" in log and "10 DEM steps and 2 fluid steps per coupling" in log, text[-400:] if rc else "")
     rc, text = sh("scaleCase -factor 2 -parcels cubic -keepMesh -output %s-again -overwrite" % case, out, check=False)
@@ -221,10 +227,7 @@ def test_coarsened_fluid():
     edit(os.path.join(out, "system", "controlDict"), r"^endTime\s+\S+;", "endTime 0.03;")
     # linear solvers converged to round-off, so that only the decomposition differs
     edit(os.path.join(out, "system", "fvSolution"), r"tolerance 1e-8; relTol [0-9.]+;", "tolerance 1e-14; relTol 0;")
-    rc, text = sh("mkdir -p DEM/post && (cd DEM && liggghts -in in.packing -log post/log.packing "
-                  "-screen post/screen.packing) && cp -r 0.orig 0 && blockMesh > log.blockMesh && "
-                  "pimpleDEMFoam > log.serial 2>&1", out, check=False)
-    log = open(os.path.join(out, "log.serial")).read() if os.path.isfile(os.path.join(out, "log.serial")) else ""
+    rc, text, log = pack_and_run(out, "log.serial")
     check("h = 2: 1250 parcels coupled on 168 cells, 8 DEM steps and 1 fluid step per coupling",
           rc == 0 and "nCells: 168" in open(os.path.join(out, "log.blockMesh")).read()
           and "8 DEM steps and 1 fluid steps per coupling" in log and "1250 particles" in log, text[-400:])

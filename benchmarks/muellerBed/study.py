@@ -23,7 +23,8 @@ simulation in published/), results/profiles_U<U>.png and velocity_U<U>.png.
 with the tutorial's current bedProfiles.py, then reports.
 
 --depth N runs the same plan with N fluid cells across the bed's depth and
-no-slip front and back walls, named <run>_depth<N>.
+no-slip front and back walls, named <run>_depth<N>; --end other than 5 s
+adds _<end>s to the name.
 
 usage: study.py [--models M,..] [--velocities 0.6,0.9] [--cells 2.5,1.5,4]
                 [--parcels 1.5,2] [--depth 1] [--end 5] [--report | --refresh]
@@ -51,27 +52,28 @@ MODELS = ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion")
 MESH_MODELS = ("centroid", "analytical", "kernel")
 
 
-def plan(models, velocities, cells, parcels, depth):
+def plan(models, velocities, cells, parcels, depth, end):
     runs = []
     for c in cells:
         for m in models:
             if c == 2.5 or m in MESH_MODELS:
-                runs += [(m, u, c, 1, depth) for u in velocities]
-    return runs + [(m, u, 2.5, h, depth) for h in parcels for m in models for u in velocities]
+                runs += [(m, u, c, 1, depth, end) for u in velocities]
+    return runs + [(m, u, 2.5, h, depth, end) for h in parcels for m in models for u in velocities]
 
 
-def run_name(model, u, cells, h=1, depth=1):
-    return "%s_%g_U%g%s%s" % (model, cells, u, "" if h == 1 else "_parcels%g" % h,
-                              "" if depth == 1 else "_depth%d" % depth)
+def run_name(model, u, cells, h=1, depth=1, end=5):
+    return "%s_%g_U%g%s%s%s" % (model, cells, u, "" if h == 1 else "_parcels%g" % h,
+                                "" if depth == 1 else "_depth%d" % depth, "" if end == 5 else "_%gs" % end)
 
 
 def record_name(r):
-    return run_name(r["model"], r["U"], r["cells"], r.get("parcels", 1), r.get("depth", 1))
+    return run_name(r["model"], r["U"], r["cells"], r.get("parcels", 1), r.get("depth", 1), r.get("end", 5))
 
 
 def describe(r):
-    return "%s, %g d%s%s" % (r["model"], r["cells"], "" if r.get("parcels", 1) == 1 else ", parcels h = %g" % r["parcels"],
-                             "" if r.get("depth", 1) == 1 else ", %d cells deep" % r["depth"])
+    return "%s, %g d%s%s%s" % (r["model"], r["cells"], "" if r.get("parcels", 1) == 1 else ", parcels h = %g" % r["parcels"],
+                               "" if r.get("depth", 1) == 1 else ", %d cells deep" % r["depth"],
+                               "" if r.get("end", 5) == 5 else ", %g s" % r["end"])
 
 
 def packing():
@@ -90,7 +92,7 @@ def packing():
 
 
 def run(model, u, cells, h, depth, end):
-    name = run_name(model, u, cells, h, depth)
+    name = run_name(model, u, cells, h, depth, end)
     case = os.path.join(WORK, name)
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(TUTORIAL, case, ignore=shutil.ignore_patterns(
@@ -109,7 +111,7 @@ def run(model, u, cells, h, depth, end):
         raise RuntimeError("%s failed: see %s" % (name, os.path.join(case, "log.Allrun")))
     if h != 1:
         case = os.path.join(case, "parcels_h%g" % h)
-    return name, save(name, case, dict(model=model, U=u, cells=cells, parcels=h, depth=depth, wall_s=wall,
+    return name, save(name, case, dict(model=model, U=u, cells=cells, parcels=h, depth=depth, end=end, wall_s=wall,
                                        wall_per_simulated_s=wall/end))
 
 
@@ -124,7 +126,8 @@ def refresh():
         if not os.path.isfile(os.path.join(case, "muellerBed.result")):
             continue
         sh("VFM_PROJECT_DIR=%s /usr/bin/python3 %s" % (ROOT, os.path.join(TUTORIAL, "bedProfiles.py")), case)
-        keep = {k: r[k] for k in ("model", "U", "cells", "parcels", "depth", "wall_s", "wall_per_simulated_s") if k in r}
+        keep = {k: r[k] for k in ("model", "U", "cells", "parcels", "depth", "end", "wall_s", "wall_per_simulated_s")
+                if k in r}
         save(record_name(r), case, keep)
         print("refreshed %s" % record_name(r), flush=True)
 
@@ -171,13 +174,14 @@ def table_rows(records):
         void = differences(r["U"], "voidfraction", HEIGHTS, lambda h: profile(name, h))
         velocity = differences(r["U"], "particleVelocity", VELOCITY_HEIGHTS[r["U"]],
                                lambda h: profile(name, h, "particleVelocity"))
+        slice_ = differences(r["U"], "voidfraction", HEIGHTS, lambda h: profile(name, h, "voidfractionSlice"))
         r["mad"] = [f[0] if f else None for f in void]
         needed = " / ".join("%.0f" % r["voidfraction_%s_window_for_0.01" % h] if "voidfraction_%s_window_for_0.01" % h in r
                             else "n/a" for h in HEIGHTS)
-        rows.append("| %s | %g | %g | %d | %g | %.3f | %.1f | %.3f / %.3f | %s | %s | %s | %s | %.0f |" % (
-            r["model"], r["cells"], r.get("parcels", 1), r.get("depth", 1), r["U"], r["dp_over_weight"], 1000*r["bed_height_m"],
+        rows.append("| %s | %g | %g | %d | %g | %.3f | %.1f | %.3f / %.3f | %s | %s | %s | %s | %s | %.0f |" % (
+            r["model"] + ("" if r.get("end", 5) == 5 else " (%g s)" % r["end"]), r["cells"], r.get("parcels", 1), r.get("depth", 1), r["U"], r["dp_over_weight"], 1000*r["bed_height_m"],
             r["voidfraction_h16.4mm_halves"], r["voidfraction_h31.2mm_halves"], needed, cells(void, 0),
-            cells(void, 1, "%+.3f"), cells(velocity, 0), r["wall_per_simulated_s"]))
+            cells(void, 1, "%+.3f"), cells(slice_, 0), cells(velocity, 0), r["wall_per_simulated_s"]))
     return rows
 
 
@@ -188,36 +192,38 @@ def published_rows(velocities):
                            lambda h: measurement.published("sediFoam", "voidfraction", u, h))
         velocity = differences(u, "particleVelocity", VELOCITY_HEIGHTS[u],
                                lambda h: measurement.published("sediFoam", "particleVelocity", u, h))
-        rows.append("| sediFoam (published) | %s | 1 | 1 | %g | | | | | %s | %s | %s | |" % (
+        rows.append("| sediFoam (published) | %s | 1 | 1 | %g | | | | | %s | %s | | %s | |" % (
             {0.6: "1.7", 0.9: "3.3"}[u], u, cells(void, 0), cells(void, 1, "%+.3f"), cells(velocity, 0)))
     return rows
 
 
 def ranking(records):
-    """mean MAD over the four measured profiles, per (model, cells, parcels) run at both velocities"""
+    """mean MAD over the four measured profiles, per run made at both velocities"""
     runs = {}
     for r in records:
-        runs.setdefault((r["model"], r["cells"], r.get("parcels", 1), r.get("depth", 1)), {})[r["U"]] = r["mad"]
+        if r.get("end", 5) == 5:      # the plan's runs, of one length
+            runs.setdefault(describe(r), {})[r["U"]] = r["mad"]
     scored = [(np.mean(m[0.6] + m[0.9]), key, m) for key, m in runs.items()
               if set(m) == {0.6, 0.9} and None not in m[0.6] + m[0.9]]
     sedi = [measurement.difference(measurement.measured("voidfraction", u, h), *measurement.published(
         "sediFoam", "voidfraction", u, h).T)[0] for u in (0.6, 0.9) for h in HEIGHTS]
-    scored.append((np.mean(sedi), ("sediFoam (published)", float("nan"), 1, 1), {0.6: sedi[:2], 0.9: sedi[2:]}))
-    lines = ["| rank | model | cells (d) | parcels h | depth cells | mean MAD | 0.6 m/s: 16.4 / 31.2 mm"
-             " | 0.9 m/s: 16.4 / 31.2 mm |", "|---|---|---|---|---|---|---|---|"]
-    for i, (score, (model, c, h, depth), m) in enumerate(sorted(scored, key=lambda s: s[0])):
-        lines.append("| %d | %s | %s | %g | %d | %.3f | %.3f / %.3f | %.3f / %.3f |" % (
-            i + 1, model, "%g" % c if c == c else "1.7 / 3.3", h, depth, score, *m[0.6], *m[0.9]))
+    scored.append((np.mean(sedi), "sediFoam (published), 1.7 d / 3.3 d", {0.6: sedi[:2], 0.9: sedi[2:]}))
+    lines = ["| rank | run | mean MAD | 0.6 m/s: 16.4 / 31.2 mm | 0.9 m/s: 16.4 / 31.2 mm |",
+             "|---|---|---|---|---|"]
+    for i, (score, name, m) in enumerate(sorted(scored, key=lambda s: s[0])):
+        lines.append("| %d | %s | %.3f | %.3f / %.3f | %.3f / %.3f |" % (i + 1, name, score, *m[0.6], *m[0.9]))
     return lines
 
 
 def report():
     records = [json.load(open(p)) for p in sorted(glob.glob(os.path.join(RESULTS, "runs", "*.json")))]
-    records.sort(key=lambda r: (r["U"], r.get("parcels", 1), r.get("depth", 1), r["cells"], MODELS.index(r["model"])))
+    records.sort(key=lambda r: (r["U"], r.get("parcels", 1), r.get("depth", 1), r.get("end", 5), r["cells"],
+                                MODELS.index(r["model"])))
     lines = ["| model | cells (d) | parcels h | depth cells | U (m/s) | dp / weight | bed height (mm) | halves differ (16.4 / 31.2 mm)"
-             " | halves within 0.01 after (s) | MAD from measured (16.4 / 31.2 mm) | signed (16.4 / 31.2 mm) | v_z MAD (m/s, at each measured height)"
+             " | halves within 0.01 after (s) | MAD from measured (16.4 / 31.2 mm) | signed (16.4 / 31.2 mm)"
+             " | MAD, particles in a 1.2 mm slice | v_z MAD (m/s, at each measured height)"
              " | wall s per simulated s |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     lines += table_rows(records) + published_rows(sorted({r["U"] for r in records})) + [""] + ranking(records)
     with open(os.path.join(RESULTS, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -295,12 +301,12 @@ def main():
     elif not args.report:
         todo = [r for r in plan(args.models.split(","), [float(u) for u in args.velocities.split(",")],
                                 [float(c) for c in args.cells.split(",") if c],
-                                [float(h) for h in args.parcels.split(",") if h], args.depth)
+                                [float(h) for h in args.parcels.split(",") if h], args.depth, args.end)
                 if not os.path.isfile(os.path.join(RESULTS, "runs", run_name(*r) + ".json"))]
-        for i, (model, u, cells, h, depth) in enumerate(todo):
+        for i, (model, u, cells, h, depth, end) in enumerate(todo):
             print("[%d/%d] %s, U = %g m/s, %g s" % (i + 1, len(todo), describe(
-                dict(model=model, cells=cells, parcels=h, depth=depth)), u, args.end), flush=True)
-            name, record = run(model, u, cells, h, depth, args.end)
+                dict(model=model, cells=cells, parcels=h, depth=depth)), u, end), flush=True)
+            name, record = run(model, u, cells, h, depth, end)
             print("    dp / weight %.4g, bed height %.4g mm, %.4g wall s per simulated s"
                   % (record["dp_over_weight"], 1000*record["bed_height_m"], record["wall_per_simulated_s"]),
                   flush=True)

@@ -257,6 +257,8 @@ def test_coarsened_fluid():
         rc, text = sh("scaleCase -factor 2 -parcels cubic -output %s-h2 -overwrite" % c, c, check=False)
         ok = rc == 1 and needle in text and "-keepMesh" in text
         check("%s: error says '%s' and names -keepMesh" % (name, needle), ok, "" if ok else text[-500:])
+    rc, text = sh("scaleCase -factor 2 -keepMesh -output %s-keep -overwrite" % case, case, check=False)
+    check("-keepMesh without -parcels: refused", rc == 1 and "-keepMesh goes with -parcels" in text, text[-300:])
     rc, text = sh("scaleCase -factor 5 -parcels cubic -output %s-h5 -overwrite" % case, case, check=False)
     ok = rc == 1 and "2 cells in direction 1, which would round to none" in text
     check("h = 5: the depth's 2 cells would round to none: error naming the block", ok, "" if ok else text[-500:])

@@ -101,6 +101,12 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
 
     const scalar h = finiteOption(args, "factor");
+    if (args.found("keepMesh") && !args.found("parcels"))
+    {
+        FatalErrorInFunction
+            << "-keepMesh goes with -parcels: the exact scaling scales the mesh"
+            << exit(FatalError);
+    }
     if (!(h > 0))
     {
         FatalErrorInFunction << "-factor " << h << ": must be positive" << exit(FatalError);

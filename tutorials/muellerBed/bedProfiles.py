@@ -120,9 +120,8 @@ def read_band(path):
     return snapshots
 
 
-def velocity_profiles(start):
+def velocity_profiles(snapshots, start):
     edges = np.linspace(0, WIDTH, int(round(WIDTH/BIN)) + 1)
-    snapshots = read_band(os.path.join("DEM", "post", "band.dump"))
     t = np.array([s[0]*PARAMETERS["demStep"] for s in snapshots])
     profiles = {}
     for h in VELOCITY_HEIGHTS:
@@ -132,6 +131,27 @@ def velocity_profiles(start):
         profiles[h] = (0.5*(edges[1:] + edges[:-1]),
                        {k: mean_per_bin(sums[w].sum(axis=0), counts[w].sum(axis=0))
                         for k, w in windows(t, start).items()})
+    return profiles
+
+
+def slice_profiles(snapshots, start):
+    """the void fraction of a slice one diameter thick at each measured
+    height, from the particles alone: each sphere's volume between the
+    slice's planes, binned by its centre in 2 mm across the width, over the
+    whole depth (what a thin magnetic resonance slice sees, without the
+    fluid cells' height)"""
+    r, half = PARAMETERS["radius"], PARAMETERS["sliceHalf"]
+    edges = np.linspace(0, WIDTH, int(round(WIDTH/BIN)) + 1)
+    t = np.array([s[0]*PARAMETERS["demStep"] for s in snapshots])
+    band = (VELOCITY_HEIGHTS[0] - half, VELOCITY_HEIGHTS[-1] + half)
+    profiles = {}
+    for h in (h for h in HEIGHTS if band[0] <= h - half - r and h + half + r <= band[1]):
+        solid = []
+        for _, x, z, _ in snapshots:
+            a, b = np.clip(h - half - z, -r, r), np.clip(h + half - z, -r, r)
+            solid.append(np.histogram(x, edges, weights=np.pi*(r*r*(b - a) - (b**3 - a**3)/3))[0])
+        alpha = 1 - np.array(solid)/(BIN*DEPTH*2*half)
+        profiles[h] = (0.5*(edges[1:] + edges[:-1]), {k: alpha[w].mean(axis=0) for k, w in windows(t, start).items()})
     return profiles
 
 
@@ -168,8 +188,10 @@ def main():
     os.makedirs("postProcessing/profiles", exist_ok=True)
     result = {"start_s": start, "end_s": end, "dp_Pa": dp, "weight_Pa": weight, "dp_over_weight": dp/weight,
               "bed_height_m": height}
+    band = read_band(os.path.join("DEM", "post", "band.dump"))
     kinds = (("voidfraction", void_fraction_profiles(start), "voidfraction"),
-             ("particleVelocity", velocity_profiles(start), "vz_m_s"))
+             ("particleVelocity", velocity_profiles(band, start), "vz_m_s"),
+             ("voidfractionSlice", slice_profiles(band, start), "voidfraction"))
     u = inlet_velocity()
     print("averages over %.4g to %.4g s:" % (start, end))
     print("    pressure drop %.4g Pa, bed weight per area %.4g Pa (ratio %.4g); bed height (twice the "
@@ -200,6 +222,7 @@ def main():
 
 
 def measured_points(kind, u, h):
+    kind = "voidfraction" if kind.startswith("voidfraction") else kind
     return measurement.measured(kind, u, label(h)) if u is not None else None
 
 
@@ -209,7 +232,7 @@ def plot(kinds, u):
     import matplotlib.pyplot as plt
     model = re.search(r"(?m)^voidFractionModel\s+(\w+);", open("constant/couplingProperties").read()).group(1)
     fig, axes = plt.subplots(1, 3, figsize=(13, 4), sharex=True)
-    (_, void, _), (_, velocity, _) = kinds
+    (_, void, _), (_, velocity, _), (_, thin, _) = kinds
     panels = [(axes[0], "voidfraction", HEIGHTS[1:]), (axes[1], "voidfraction", HEIGHTS[:1]),
               (axes[2], "particleVelocity", VELOCITY_HEIGHTS)]
     for ax, kind, heights in panels:
@@ -222,6 +245,9 @@ def plot(kinds, u):
                     ax.plot(1000*x, averages[half], lw=0.8, alpha=0.5, label=half)
             ax.plot(1000*x, averages["all"], "-", color=colour, lw=1.6,
                     label=model if len(heights) == 1 else "%s, %.0f mm" % (model, 1000*h))
+            if kind == "voidfraction" and h in thin:
+                ax.plot(1000*thin[h][0], thin[h][1]["all"], "--", color=colour, lw=1.2,
+                        label="particles in a %.1f mm slice" % (2000*PARAMETERS["sliceHalf"]))
             points = measured_points(kind, u, h)
             if points is not None:
                 ax.plot(1000*points[:, 0], points[:, 1], "o", color=colour, mfc="none",

@@ -5,8 +5,10 @@
     bedProfiles.py --probes NX NY NZ   the probe locations for system/probeLocations:
                                     the cell centres of the rows either side of
                                     each measured height, on the mesh Allrun makes
-    bedProfiles.py [--start T]      after a run: the averages over t > T (default
-                                    the first second, or a third of shorter runs)
+    bedProfiles.py [--start T] [--end E]
+                                    after a run: the averages over T < t <= E
+                                    (default: from the first second, or a third of
+                                    shorter runs, to the end)
 
 The void fraction across the width at each measured height (sliceLow and
 sliceHigh in DEM/in.parameters) is interpolated linearly in z between the two
@@ -69,12 +71,14 @@ def read_probes():
 BLOCK = 0.5     # s: several bubble periods, for batch means
 
 
-def windows(t, start):
-    """masks of the averaging window (t > start), its halves, and its
+def windows(t, window):
+    """masks of the averaging window (start, stop], its halves, and its
     consecutive blocks of BLOCK seconds"""
-    mid = 0.5*(start + t[-1])
-    found = {"all": t > start, "first half": (t > start) & (t <= mid), "second half": t > mid}
-    for k in range(int((t[-1] - start)/BLOCK + 1e-9)):
+    start, stop = window
+    inside = (t > start) & (t <= stop)
+    mid = 0.5*(start + stop)
+    found = {"all": inside, "first half": inside & (t <= mid), "second half": inside & (t > mid)}
+    for k in range(int((stop - start)/BLOCK + 1e-9)):
         found["block %d" % k] = (t > start + k*BLOCK) & (t <= start + (k + 1)*BLOCK)
     return found
 
@@ -93,7 +97,7 @@ def convergence(averages):
     return np.sqrt(8/np.pi)*spread*np.sqrt(BLOCK/T), BLOCK*8/np.pi*(spread/0.01)**2
 
 
-def void_fraction_profiles(start):
+def void_fraction_profiles(window):
     t, points, values = read_probes()
     profiles = {}
     for h in HEIGHTS:
@@ -104,7 +108,7 @@ def void_fraction_profiles(start):
         at_height = (1 - weight)*values[:, lower] + weight*values[:, upper]
         x, column = np.unique(points[lower, 0], return_inverse=True)
         across_depth = np.stack([at_height[:, column == i].mean(axis=1) for i in range(len(x))], axis=1)
-        profiles[h] = (x, {k: across_depth[w].mean(axis=0) for k, w in windows(t, start).items()})
+        profiles[h] = (x, {k: across_depth[w].mean(axis=0) for k, w in windows(t, window).items()})
     return profiles
 
 
@@ -120,7 +124,7 @@ def read_band(path):
     return snapshots
 
 
-def velocity_profiles(snapshots, start):
+def velocity_profiles(snapshots, window):
     edges = np.linspace(0, WIDTH, int(round(WIDTH/BIN)) + 1)
     t = np.array([s[0]*PARAMETERS["demStep"] for s in snapshots])
     profiles = {}
@@ -130,11 +134,11 @@ def velocity_profiles(snapshots, start):
         counts = np.array([np.histogram(x[k], edges)[0] for (_, x, _, _), k in zip(snapshots, inside)])
         profiles[h] = (0.5*(edges[1:] + edges[:-1]),
                        {k: mean_per_bin(sums[w].sum(axis=0), counts[w].sum(axis=0))
-                        for k, w in windows(t, start).items()})
+                        for k, w in windows(t, window).items()})
     return profiles
 
 
-def slice_profiles(snapshots, start):
+def slice_profiles(snapshots, window):
     """the void fraction of a slice one diameter thick at each measured
     height, from the particles alone: each sphere's volume between the
     slice's planes, binned by its centre in 2 mm across the width, over the
@@ -151,7 +155,7 @@ def slice_profiles(snapshots, start):
             a, b = np.clip(h - half - z, -r, r), np.clip(h + half - z, -r, r)
             solid.append(np.histogram(x, edges, weights=np.pi*(r*r*(b - a) - (b**3 - a**3)/3))[0])
         alpha = 1 - np.array(solid)/(BIN*DEPTH*2*half)
-        profiles[h] = (0.5*(edges[1:] + edges[:-1]), {k: alpha[w].mean(axis=0) for k, w in windows(t, start).items()})
+        profiles[h] = (0.5*(edges[1:] + edges[:-1]), {k: alpha[w].mean(axis=0) for k, w in windows(t, window).items()})
     return profiles
 
 
@@ -176,22 +180,23 @@ def main():
         sys.stdout.write(probe_locations(*(int(n) for n in sys.argv[2:])))
         return
     t_dp = np.loadtxt("postProcessing/inletPressure/0/surfaceFieldValue.dat", comments="#", ndmin=2)
-    end = t_dp[-1, 0]
+    end = min(float(sys.argv[sys.argv.index("--end") + 1]), t_dp[-1, 0]) if "--end" in sys.argv else t_dp[-1, 0]
     start = float(sys.argv[sys.argv.index("--start") + 1]) if "--start" in sys.argv else min(1.0, end/3)
+    window = (start, end)
     nu, rho_f, _ = caseProperties.fluid()
     rho_p, g, d = caseProperties.particle_density(), caseProperties.gravity(), caseProperties.particle_diameter()
     weight = PARAMETERS["count"]*np.pi/6*d**3*(rho_p - rho_f)*g/(WIDTH*DEPTH)
-    dp = rho_f*t_dp[t_dp[:, 0] > start, 1].mean()
+    dp = rho_f*t_dp[(t_dp[:, 0] > start) & (t_dp[:, 0] <= end), 1].mean()
     bed = np.loadtxt("DEM/post/bed.txt", comments="#", ndmin=2)
-    height = 2*bed[bed[:, 0] > start, 1].mean()
+    height = 2*bed[(bed[:, 0] > start) & (bed[:, 0] <= end), 1].mean()
 
     os.makedirs("postProcessing/profiles", exist_ok=True)
     result = {"start_s": start, "end_s": end, "dp_Pa": dp, "weight_Pa": weight, "dp_over_weight": dp/weight,
               "bed_height_m": height}
     band = read_band(os.path.join("DEM", "post", "band.dump"))
-    kinds = (("voidfraction", void_fraction_profiles(start), "voidfraction"),
-             ("particleVelocity", velocity_profiles(band, start), "vz_m_s"),
-             ("voidfractionSlice", slice_profiles(band, start), "voidfraction"))
+    kinds = (("voidfraction", void_fraction_profiles(window), "voidfraction"),
+             ("particleVelocity", velocity_profiles(band, window), "vz_m_s"),
+             ("voidfractionSlice", slice_profiles(band, window), "voidfraction"))
     u = inlet_velocity()
     print("averages over %.4g to %.4g s:" % (start, end))
     print("    pressure drop %.4g Pa, bed weight per area %.4g Pa (ratio %.4g); bed height (twice the "

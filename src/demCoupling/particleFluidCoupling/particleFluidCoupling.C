@@ -129,7 +129,8 @@ Foam::particleFluidCoupling::particleFluidCoupling
     timeFluid_(0),
     worstMomentumError_(0),
     totalForce_(Zero),
-    mostHeld_(0)
+    mostHeld_(0),
+    reportExchange_(dict_.getOrDefault<bool>("reportExchange", false))
 {
     readForces();
 
@@ -556,7 +557,9 @@ void Foam::particleFluidCoupling::pushForces()
         << " fluid " << timeFluid_
         << "; alpha " << s.minVoidFraction << ".." << s.maxVoidFraction
         << ", momentum balance " << worstMomentumError_
-        << "; total fluid force on the particles " << totalForce_ << endl;
+        << "; total fluid force on the particles " << totalForce_
+        << "; wall seconds since the last coupling " << couplingClock_.timeIncrement() << endl;
+    if (reportExchange_) distributor_->writeExchange(Info);
 
     ++nCouplings_;
     fluidStep_ = 0;

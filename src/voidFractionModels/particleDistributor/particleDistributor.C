@@ -8,6 +8,7 @@
 #include "PstreamBuffers.H"
 #include "ListOps.H"
 #include "UIndirectList.H"
+#include "processorPolyPatch.H"
 
 Foam::particleDistributor::particleDistributor(const voidFractionModel& model)
 :
@@ -104,6 +105,8 @@ Foam::particleHolders Foam::particleDistributor::distribute
         for (label i = 1; ascending && i < ids.size(); ++i) ascending = ids[i] > ids[i - 1];
         if (ascending)
         {
+            last_ = exchangeCounts();
+            last_.owned = last_.held = owned.size();
             held = std::move(owned);
             return particleHolders();
         }
@@ -198,8 +201,8 @@ void Foam::particleDistributor::incomingParticles::exchange
            << (withU ? vectorField(v, send) : vectorField())
            << (withTypes ? labelList(UIndirectList<label>(type, send)) : labelList()) << flags[rank];
     }
-    labelList recvSizes;
-    buffers.finishedSends(recvSizes);
+    buffers.finishedSends(bytesFrom);
+    const labelList& recvSizes = bytesFrom;
     nHeld = 0;
     nWithU = 0;
     nWithTypes = 0;
@@ -233,6 +236,8 @@ Foam::particleHolders Foam::particleDistributor::distribute
     if (!Pstream::parRun())
     {
         // one rank holds all: only the id order to make
+        last_ = exchangeCounts();
+        last_.owned = last_.held = owned.size();
         held = owned.reordered(idOrder(owned.ids()));
         return particleHolders();
     }
@@ -249,6 +254,11 @@ Foam::particleHolders Foam::particleDistributor::distribute
     in.exchange(owned, subMap, flags);
     const List<labelList>& receivedIds = in.receivedIds;
     const label nHeld = in.nHeld, nWithU = in.nWithU, nWithTypes = in.nWithTypes;
+    last_.owned = owned.size();
+    last_.held = nHeld;
+    last_.sentTo.setSize(nProcs);
+    forAll(subMap, rank) last_.sentTo[rank] = (rank == me) ? 0 : subMap[rank].size();
+    last_.bytesFrom = in.bytesFrom;
 
     labelList allIds(nHeld);
     label k = 0;
@@ -296,4 +306,54 @@ Foam::particleHolders Foam::particleDistributor::distribute
     if (nWithU) held.setVelocities(std::move(heldU));
     if (nWithTypes) held.setTypes(std::move(heldTypes));
     return holders;
+}
+
+
+void Foam::particleDistributor::writeExchange(Ostream& os) const
+{
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+    const polyMesh& mesh = model_.mesh();
+    label faces = 0;
+    scalar area = 0;
+    for (const polyPatch& patch : mesh.boundaryMesh())
+    {
+        if (isA<processorPolyPatch>(patch))
+        {
+            faces += patch.size();
+            area += sum(patch.magFaceAreas());
+        }
+    }
+    List<labelList> sentTo(nProcs), bytesFrom(nProcs), sizes(nProcs);
+    List<scalar> areas(nProcs);
+    sentTo[me] = last_.sentTo.size() ? last_.sentTo : labelList(nProcs, Zero);
+    bytesFrom[me] = last_.bytesFrom.size() ? last_.bytesFrom : labelList(nProcs, Zero);
+    sizes[me] = labelList({last_.owned, last_.held, mesh.nCells(), faces});
+    areas[me] = area;
+    Pstream::gatherList(sentTo);
+    Pstream::gatherList(bytesFrom);
+    Pstream::gatherList(sizes);
+    Pstream::gatherList(areas);
+    if (!Pstream::master()) return;
+    forAll(sentTo, rank)
+    {
+        label sent = 0, sentBytes = 0, to = 0, received = 0, receivedBytes = 0, from = 0;
+        for (label other = 0; other < nProcs; ++other)
+        {
+            if (other == rank) continue;
+            sent += sentTo[rank][other];
+            sentBytes += bytesFrom[other][rank];
+            to += (sentTo[rank][other] > 0);
+            received += sentTo[other][rank];
+            receivedBytes += bytesFrom[rank][other];
+            from += (sentTo[other][rank] > 0);
+        }
+        os  << "exchange rank " << rank << ": owns " << sizes[rank][0]
+            << " holds " << sizes[rank][1] << " sends " << sent << " particles "
+            << sentBytes << " bytes to " << to << " ranks receives " << received
+            << " particles " << receivedBytes << " bytes from " << from
+            << " ranks; cells " << sizes[rank][2] << " processor faces "
+            << sizes[rank][3] << " area " << areas[rank] << " m2" << nl;
+    }
+    os.flush();
 }

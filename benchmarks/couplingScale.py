@@ -43,8 +43,12 @@ STAGES = ("dem", "exchange", "voidfraction", "forces", "fluid")
 D = 0.001                      # the tutorial's beads, m
 CELL = 3*D                     # its cells
 DEM_STEPS = 10                 # DEM steps per coupling, as the tutorial
-# the beds: name -> (width, depth) in m; the tutorial's is 48 x 6 mm
-BEDS = {"1e4": (0.048, 0.006), "1e5": (0.096, 0.030), "1e6": (0.240, 0.120)}
+# the beds: name -> beads across x and y of a lattice of LAYERS layers
+# with 2 % gaps (the packing's start); the domain is the lattice's extent
+# (the tutorial's is 48 x 6 mm)
+GAP = 1.02
+LAYERS = 36
+BEDS = {"1e4": (47, 6), "1e5": (94, 30), "1e6": (235, 118)}
 LINE = re.compile(r"^coupling (\d+): (\d+) particles \(at most (\d+) on a rank\), seconds "
                   r"DEM (\S+) exchange (\S+) voidFraction (\S+) forces (\S+) fluid (\S+);"
                   r".*; wall seconds since the last coupling (\S+)$")
@@ -52,14 +56,6 @@ EXCHANGE = re.compile(r"^exchange rank (\d+): owns (\d+) holds (\d+) sends (\d+)
                       r"to (\d+) ranks receives (\d+) particles (\d+) bytes from (\d+) ranks; "
                       r"cells (\d+) processor faces (\d+) area (\S+) m2$")
 SETTLE_STEPS = 3000            # 0.03 s: the top layer falls its gaps in about 0.012 s
-
-
-def lattice(width, depth, count):
-    """Beads per row across x and y with at least 2 % gaps, and the layers
-    that hold count beads."""
-    nx, ny = int(width/(1.02*D)), int(depth/(1.02*D))
-    layers = -(-count//(nx*ny))
-    return nx, ny, layers
 
 
 def edit(path, pattern, replacement):
@@ -72,18 +68,19 @@ def edit(path, pattern, replacement):
 
 def prepare(case, bed):
     """The tutorial's case widened to the bed; returns the bead count."""
-    width, depth = BEDS[bed]
-    nx, ny, layers = lattice(width, depth, int(float(bed)))
+    nx, ny = BEDS[bed]
+    layers = LAYERS
+    width, depth = nx*GAP*D, ny*GAP*D
     count = nx*ny*layers
     if not os.path.isdir(case):
         runs = shutil.ignore_patterns("processor*", "log.*", "VTK", "post", "parcels_*", "stress", "*.png")
         shutil.copytree(TUTORIAL, case, ignore=lambda d, names: set(runs(d, names)) | {
             n for n in names if re.match(r"^[0-9.e-]+$", n)})
     params = os.path.join(case, "DEM", "in.parameters")
-    edit(params, r"^variable width .*$", "variable width       equal %g" % width)
-    edit(params, r"^variable depth .*$", "variable depth       equal %g" % depth)
+    edit(params, r"^variable width .*$", "variable width       equal %.9g" % width)
+    edit(params, r"^variable depth .*$", "variable depth       equal %.9g" % depth)
     edit(params, r"^variable count .*$", "variable count       equal %d" % count)
-    az = 1.02*D
+    az = GAP*D
     with open(os.path.join(case, "DEM", "in.lattice"), "w") as f:
         f.write("""# %d beads on a %d x %d x %d lattice with 2 %% gaps and a random
 # jitter, settled for %d steps under gravity; writes post/packed.restart.
@@ -108,13 +105,13 @@ thermo_style    custom step atoms ke
 run             %d
 reset_timestep  0
 write_restart   post/packed.restart
-""" % (count, nx, ny, layers, SETTLE_STEPS, width/nx, depth/ny, az, layers*az, D, SETTLE_STEPS))
+""" % (count, nx, ny, layers, SETTLE_STEPS, GAP*D, GAP*D, az, layers*az, D, SETTLE_STEPS))
     cells = [max(1, int(round(v/CELL))) for v in (width, depth, 0.120, 0.006)]
-    template = open(os.path.join(case, "system", "blockMeshDict.template")).read()
     w, d = 1e3*width, 1e3*depth
-    vertices = ("    (0 0 -6) ({w:g} 0 -6) ({w:g} {d:g} -6) (0 {d:g} -6)\n"
-                "    (0 0 0) ({w:g} 0 0) ({w:g} {d:g} 0) (0 {d:g} 0)\n"
-                "    (0 0 120) ({w:g} 0 120) ({w:g} {d:g} 120) (0 {d:g} 120)\n").format(w=w, d=d)
+    template = open(os.path.join(case, "system", "blockMeshDict.template")).read()
+    vertices = ("    (0 0 -6) ({w:.9g} 0 -6) ({w:.9g} {d:.9g} -6) (0 {d:.9g} -6)\n"
+                "    (0 0 0) ({w:.9g} 0 0) ({w:.9g} {d:.9g} 0) (0 {d:.9g} 0)\n"
+                "    (0 0 120) ({w:.9g} 0 120) ({w:.9g} {d:.9g} 120) (0 {d:.9g} 120)\n").format(w=w, d=d)
     template, n = re.subn(r"vertices\s*\(.*?\n\);", "vertices\n(\n" + vertices + ");", template, flags=re.S)
     if n != 1:
         sys.exit("couplingScale: no vertices in the tutorial's blockMeshDict.template")
@@ -260,7 +257,7 @@ def exchange_runs(work, bed, ranks_list, model, refresh):
             continue
         count, _, _ = prepare_packed(work, case, bed)
         print("  exchange, %s beads on %d ranks (oversubscribed, not timed)" % (bed, ranks), flush=True)
-        log = couple(case, ranks, 3, model, report_exchange=True)
+        log = couple(case, ranks, 3, model, report_exchange=True, write_at_end=True)
         lines = [EXCHANGE.match(l.strip()) for l in open(log)]
         lines = [m for m in lines if m][-ranks:]
         if len(lines) != ranks:

@@ -4,6 +4,7 @@
 references (Schiller-Naumann, Di Felice and Beetstra single-sphere drag,
 Ergun, bed weight, Wen-Yu), exact momentum exchange, restart, serial
 against 2 ranks, and bad input stopping with a clear error and no hang."""
+import csv
 import math
 import os
 import re
@@ -563,8 +564,70 @@ def test_mueller_bed():
     check("2 cells across the depth: one depth-averaged void fraction per column of cells (9)",
           len(data) == 9 and np.isfinite(data).all() and data[:, 1].min() >= 0.2 and data[:, 1].max() <= 1, "")
 
+def vtk_particles(path):
+    """Positions and radii of a particles_*.vtk the solver writes."""
+    lines = open(path).read().split("\n")
+    n = int(next(l for l in lines if l.startswith("POINTS")).split()[1])
+    start = next(i for i, l in enumerate(lines) if l.startswith("POINTS")) + 1
+    x = np.array([[float(v) for v in lines[start + i].split()] for i in range(n)])
+    at = next(i for i, l in enumerate(lines) if l.startswith("SCALARS radius")) + 2
+    r = np.array([float(lines[at + i]) for i in range(n)])
+    return x, r
+
+
+def test_coupling_scale():
+    """The scale benchmark's short version: its report, the stage split
+    against the wall clock, and the exchange counted against the geometry."""
+    print("couplingScale --short: report columns, stage split, particles exchanged")
+    rc, out = sh("/usr/bin/python3 benchmarks/couplingScale.py --short", ROOT, check=False)
+    check("couplingScale --short runs", rc == 0, out[-800:] if rc else "")
+    if rc:
+        return
+    work = os.path.join(ROOT, "build", "couplingScale", "short")
+    series = list(csv.DictReader(open(os.path.join(work, "series.csv"))))
+    wanted = ("particles,ranks,cells,couplings,dem_ms,exchange_ms,voidfraction_ms,forces_ms,fluid_ms,"
+              "peak_rss_mb").split(",")
+    check("series.csv: a row per rank count with the required columns",
+          len(series) == 2 and all(c in series[0] and series[0][c] for c in wanted), str(list(series[0])))
+    for row in series:
+        stages = sum(float(row[c]) for c in wanted[4:9])
+        total = float(row["total_ms"])
+        check("%s ranks: the stages add up to the wall time between couplings (within 15 %%)" % row["ranks"],
+              0.85*total <= stages <= 1.01*total, "(%.2f of %.2f ms)" % (stages, total))
+        check("%s ranks: the particles are the bed's, peak memory positive" % row["ranks"],
+              int(row["particles"]) > 9000 and float(row["peak_rss_mb"]) > 0, "")
+    exchange = list(csv.DictReader(open(os.path.join(work, "exchange.csv"))))
+    for ranks in ("2", "3"):
+        rows = [r for r in exchange if r["ranks"] == ranks]
+        total = lambda c: sum(int(r[c]) for r in rows)
+        check("%s ranks: every rank reported; particles sent = received; held >= owned" % ranks,
+              len(rows) == int(ranks) and total("sent") == total("received")
+              and total("sent_bytes") == total("received_bytes") and total("holds") >= total("owns"),
+              "(sent %d, received %d)" % (total("sent"), total("received")))
+    # on 2 slabs (x below and above half the width, periodic in x) a particle is held
+    # by each slab its sphere (or its periodic image) meets
+    case = os.path.join(work, "exchange_1e4_2")
+    vtks = [f for f in os.listdir(os.path.join(case, "VTK"))] if os.path.isdir(os.path.join(case, "VTK")) else []
+    if not vtks:
+        check("the 2-rank exchange run wrote its particles", False, "")
+        return
+    x, r = vtk_particles(os.path.join(case, "VTK", sorted(vtks)[-1]))
+    width = float(re.search(r"^variable width\s+equal\s+(\S+)", open(os.path.join(
+        case, "DEM", "in.parameters")).read(), re.M).group(1))
+    expected = 0
+    for lo, hi in ((0, width/2), (width/2, width)):
+        meets = np.zeros(len(x), dtype=bool)
+        for shift in (-width, 0, width):
+            meets |= (x[:, 0] + shift + r >= lo) & (x[:, 0] + shift - r <= hi)
+        expected += int(meets.sum())
+    rows = [e for e in exchange if e["ranks"] == "2"]
+    held = sum(int(e["holds"]) for e in rows)
+    check("2 ranks: the particles held = those whose spheres meet each slab (%d of %d particles)"
+          % (len(x), held), held == expected, "(held %d, geometry %d)" % (held, expected))
+
+
 def main():
-    checks.run([test_settling_sphere, test_drag_laws, test_restart, test_serial_parallel,
+    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_restart, test_serial_parallel,
                 test_bad_input, test_parcels, test_packed_bed,
                 test_fluidised_bed, test_mueller_bed], sys.argv[1:])
     return checks.summary("coupling")

@@ -319,8 +319,35 @@ def write_table(out, results, rows):
         lines.append("| %d | %d | %d | %d | %d (%d) to %d | %d (%d) from %d | %d | %d |" % (
             r["ranks"], r["rank"], r["owns"], r["holds"], r["sent"], r["sent_bytes"], r["sent_to"],
             r["received"], r["received_bytes"], r["received_from"], r["cells"], r["processor_faces"]))
+    lines += projection(rows)[0]
     open(os.path.join(out, "series.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
+
+
+def projection(rows):
+    """From the measured exchange: particles sent per m2 of processor
+    interface, bytes per particle sent, and what columns of a bed (the full
+    height, a square grid of ranks across the width and depth) would send on
+    hundreds of ranks."""
+    if not rows:
+        return [], None
+    sigma = statistics.median(r["sent"]/r["processor_area_m2"] for r in rows if r["processor_area_m2"] > 0)
+    per_particle = statistics.median(r["sent_bytes"]/r["sent"] for r in rows if r["sent"])
+    lines = ["", "Measured: %.3g particles sent per m2 of processor interface, %.0f bytes per particle "
+             "sent (positions out; the forces come back for the same particles). Projected for the "
+             "10^6 bed split into columns of the full height:" % (sigma, per_particle), "",
+             "| ranks | columns | owned per rank | sent per rank | share of owned | bytes per rank "
+             "| ranks talked to |", "|---|---|---|---|---|---|---|"]
+    nx, ny = BEDS["1e6"]
+    width, depth, height = nx*GAP*D, ny*GAP*D, 0.126
+    count = nx*ny*LAYERS
+    for px, py in ((8, 4), (16, 8), (16, 16), (32, 32)):
+        ranks = px*py
+        area = 2*(width/px + depth/py)*height
+        sent = sigma*area
+        lines.append("| %d | %d x %d | %d | %.0f | %.0f %% | %.0f kB | 8 |" % (
+            ranks, px, py, count/ranks, sent, 100*sent/(count/ranks), sent*per_particle/1e3))
+    return lines, sigma
 
 
 def plot(out, results):

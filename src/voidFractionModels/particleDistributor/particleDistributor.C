@@ -126,7 +126,18 @@ Foam::labelListList Foam::particleDistributor::destinations
     const pointField& x = owned.positions();
     const scalarField& r = owned.radii();
 
+    scalar maxReach = 0;
+    forAll(r, p) maxReach = max(maxReach, model_.reach(r[p]));
+    if (!index_.valid() || maxReach > index_->reach())
+    {
+        boundBox all(boxes_[0]);
+        for (const boundBox& box : boxes_) all.add(box);
+        index_.reset(new rankBoxIndex(boxes_, all, splitDirections_, directions_, maxReach));
+    }
+    const rankBoxIndex& index = index_();
+
     List<DynamicList<label>> sends(nProcs);
+    labelList marked(nProcs, -1);
     forAll(x, p)
     {
         const scalar R = model_.reach(r[p]);
@@ -140,19 +151,20 @@ Foam::labelListList Foam::particleDistributor::destinations
             continue;
         }
         bool sent = false;
-        for (label rank = 0; rank < nProcs; ++rank)
+        auto sendNear = [&](const point& c)
         {
-            bool near = reaches(rank, x[p], R);
-            for (label s = 0; !near && nearSide && s < shifts.size(); ++s)
+            for (const label rank : index.ranks(c))
             {
-                near = reaches(rank, x[p] + shifts[s], R);
+                if (marked[rank] != p && reaches(rank, c, R))
+                {
+                    marked[rank] = p;
+                    sends[rank].append(p);
+                    sent = true;
+                }
             }
-            if (near)
-            {
-                sends[rank].append(p);
-                sent = true;
-            }
-        }
+        };
+        sendNear(x[p]);
+        for (label s = 0; nearSide && s < shifts.size(); ++s) sendNear(x[p] + shifts[s]);
         if (!sent) sends[Pstream::masterNo()].append(p);
     }
     labelListList subMap(nProcs);

@@ -18,14 +18,15 @@ count what moves, they are not timed) with reportExchange on, and record per
 rank the particles and bytes it sends and receives per coupling, the ranks it
 talks to, its own particles and its processor faces.
 
-Resumable: each run's result is kept in build/couplingScale/<bed>_<ranks>/
-and reused unless --refresh. Writes benchmarks/couplingScale/results/
+Each (bed, ranks) runs --repeats times, and the table takes the median over
+the repeats of each stage's median. Resumable: each run's result is kept in
+build/couplingScale/<bed>_<ranks>/ and reused unless --refresh. Writes benchmarks/couplingScale/results/
 series.csv, exchange.csv, series.md and scale.png (--short writes to
 build/couplingScale/short/ instead).
 
 usage: benchmarks/couplingScale.py [--beds 1e4,1e5,1e6] [--ranks 1,2]
            [--couplings 30] [--exchange-bed 1e5] [--exchange-ranks 2,4,8]
-           [--model analytical] [--refresh] [--short]
+           [--model analytical] [--repeats 3] [--refresh] [--short]
 """
 import argparse
 import json
@@ -47,6 +48,7 @@ DEM_STEPS = 10                 # DEM steps per coupling, as the tutorial
 # with 2 % gaps (the packing's start); the domain is the lattice's extent
 # (the tutorial's is 48 x 6 mm)
 GAP = 1.02
+SETTLE_STEPS = 3000            # 0.03 s: the top layer falls its gaps in about 0.012 s
 LAYERS = 36
 BEDS = {"1e4": (47, 6), "1e5": (94, 30), "1e6": (235, 118)}
 LINE = re.compile(r"^coupling (\d+): (\d+) particles \(at most (\d+) on a rank\), seconds "
@@ -55,7 +57,50 @@ LINE = re.compile(r"^coupling (\d+): (\d+) particles \(at most (\d+) on a rank\)
 EXCHANGE = re.compile(r"^exchange rank (\d+): owns (\d+) holds (\d+) sends (\d+) particles (\d+) bytes "
                       r"to (\d+) ranks receives (\d+) particles (\d+) bytes from (\d+) ranks; "
                       r"cells (\d+) processor faces (\d+) area (\S+) m2$")
-SETTLE_STEPS = 3000            # 0.03 s: the top layer falls its gaps in about 0.012 s
+
+
+# The packing, from in.parameters alone (so that scaleCase -parcels makes the
+# parcels' packing of it): count beads of the radius on a lattice with GAP
+# spacing filling the width and depth, whole layers then the rows of a last
+# one, a random jitter, and SETTLE_STEPS steps under gravity.
+LATTICE = """# The bed on a lattice with gaps and a random jitter, settled under
+# gravity; writes post/packed.restart.
+atom_style      granular
+atom_modify     map array
+boundary        p p f
+newton          off
+communicate     single vel yes
+units           si
+processors      * 1 1
+include         in.parameters
+variable        diameter equal 2*${radius}
+variable        spacing equal %(gap)g*${diameter}
+variable        nx equal floor(${width}/${spacing}+1e-6)
+variable        ny equal floor(${depth}/${spacing}+1e-6)
+variable        ax equal ${width}/${nx}
+variable        ay equal ${depth}/${ny}
+variable        layers equal floor(${count}/(${nx}*${ny})+1e-6)
+variable        rows equal floor((${count}-${layers}*${nx}*${ny})/${nx}+1e-6)
+variable        full equal ${layers}*${spacing}
+variable        partial equal ${full}+${spacing}
+variable        rowsEnd equal ${rows}*${ay}
+region          domain block 0 ${width} 0 ${depth} ${bottom} ${top} units box
+create_box      1 domain
+lattice         custom 1.0 a1 ${ax} 0 0 a2 0 ${ay} 0 a3 0 0 ${spacing} basis 0.5 0.5 0.5
+region          bed block 0 ${width} 0 ${depth} 0 ${full} units box
+create_atoms    1 region bed
+if              "${rows} > 0" then &
+                "region top block 0 ${width} 0 ${rowsEnd} ${full} ${partial} units box" &
+                "create_atoms 1 region top"
+set             group all diameter ${diameter} density ${density}
+displace_atoms  all random %(jitter)g %(jitter)g %(jitter)g 49979687 units box
+include         in.settings
+thermo          500
+thermo_style    custom step atoms ke
+run             %(steps)d
+reset_timestep  0
+write_restart   post/packed.restart
+""" % {"gap": GAP, "jitter": 5e-6, "steps": SETTLE_STEPS}
 
 
 def edit(path, pattern, replacement):
@@ -77,35 +122,12 @@ def prepare(case, bed):
         shutil.copytree(TUTORIAL, case, ignore=lambda d, names: set(runs(d, names)) | {
             n for n in names if re.match(r"^[0-9.e-]+$", n)})
     params = os.path.join(case, "DEM", "in.parameters")
-    edit(params, r"^variable width .*$", "variable width       equal %.9g" % width)
-    edit(params, r"^variable depth .*$", "variable depth       equal %.9g" % depth)
-    edit(params, r"^variable count .*$", "variable count       equal %d" % count)
-    az = GAP*D
+    # the values only: the comments carry the dimensions and marks scaleCase reads
+    edit(params, r"^(variable width\s+equal\s+)\S+", r"\g<1>%.9g" % width)
+    edit(params, r"^(variable depth\s+equal\s+)\S+", r"\g<1>%.9g" % depth)
+    edit(params, r"^(variable count\s+equal\s+)\S+", r"\g<1>%d" % count)
     with open(os.path.join(case, "DEM", "in.lattice"), "w") as f:
-        f.write("""# %d beads on a %d x %d x %d lattice with 2 %% gaps and a random
-# jitter, settled for %d steps under gravity; writes post/packed.restart.
-atom_style      granular
-atom_modify     map array
-boundary        p p f
-newton          off
-communicate     single vel yes
-units           si
-processors      * 1 1
-include         in.parameters
-region          domain block 0 ${width} 0 ${depth} ${bottom} ${top} units box
-create_box      1 domain
-lattice         custom 1.0 a1 %.9g 0 0 a2 0 %.9g 0 a3 0 0 %.9g basis 0.5 0.5 0.5
-region          bed block 0 ${width} 0 ${depth} 0 %.9g units box
-create_atoms    1 region bed
-set             group all diameter %g density ${density}
-displace_atoms  all random 5e-6 5e-6 5e-6 49979687 units box
-include         in.settings
-thermo          500
-thermo_style    custom step atoms ke
-run             %d
-reset_timestep  0
-write_restart   post/packed.restart
-""" % (count, nx, ny, layers, SETTLE_STEPS, GAP*D, GAP*D, az, layers*az, D, SETTLE_STEPS))
+        f.write(LATTICE)
     cells = [max(1, int(round(v/CELL))) for v in (width, depth, 0.120, 0.006)]
     w, d = 1e3*width, 1e3*depth
     template = open(os.path.join(case, "system", "blockMeshDict.template")).read()
@@ -223,27 +245,40 @@ def peak_rss_mb(case, ranks):
     return max(values)
 
 
-def series_run(work, bed, ranks, couplings, model, refresh, estimate):
+def series_run(work, bed, ranks, couplings, model, refresh, estimate, repeats):
+    """The bed on ranks, repeats times (kept as result_<k>.json); each
+    stage's median per coupling, the median over the repeats."""
     case = os.path.join(work, "%s_%d" % (bed, ranks))
-    keep = os.path.join(case, "result.json")
-    if os.path.exists(keep) and not refresh:
-        result = json.load(open(keep))
-        if result.get("couplings") == couplings and result.get("model") == model:
-            print("  %s beads on %d rank(s): kept from %s" % (bed, ranks, keep), flush=True)
-            return result
-    count, cells, packing = prepare_packed(work, case, bed)
-    guess = " (about %.0f s)" % estimate(count, ranks, couplings) if estimate(count, ranks, couplings) else ""
-    print("  %s beads (%d) on %d rank(s), %d couplings%s" % (bed, count, ranks, couplings, guess), flush=True)
-    start = time.time()
-    log = couple(case, ranks, couplings, model)
-    result = measure(log, skip=max(2, couplings//6))
-    result.update({"bed": bed, "ranks": ranks, "cells": cells, "couplings": couplings, "model": model,
-                   "packing_s": packing, "peak_rss_mb": peak_rss_mb(case, ranks),
-                   "wall_s": time.time() - start})
-    json.dump(result, open(keep, "w"), indent=1)
-    print("    %.0f ms per coupling (%s), peak %.0f MB" % (result["total_ms"], ", ".join(
-        "%s %.1f" % (s, result[s]) for s in STAGES), result["peak_rss_mb"]), flush=True)
-    return result
+    kept = []
+    for k in range(1, repeats + 1):
+        keep = os.path.join(case, "result_%d.json" % k)
+        if os.path.exists(keep) and not refresh:
+            result = json.load(open(keep))
+            if result.get("couplings") == couplings and result.get("model") == model:
+                print("  %s beads on %d rank(s), repeat %d: kept from %s" % (bed, ranks, k, keep), flush=True)
+                kept.append(result)
+                continue
+        count, cells, packing = prepare_packed(work, case, bed)
+        guess = estimate(count, ranks, couplings)
+        print("  %s beads (%d) on %d rank(s), %d couplings, repeat %d of %d%s" % (
+            bed, count, ranks, couplings, k, repeats, " (about %.0f s)" % guess if guess else ""), flush=True)
+        start = time.time()
+        log = couple(case, ranks, couplings, model)
+        result = measure(log, skip=max(2, couplings//6))
+        result.update({"bed": bed, "ranks": ranks, "cells": cells, "couplings": couplings, "model": model,
+                       "packing_s": packing, "peak_rss_mb": peak_rss_mb(case, ranks),
+                       "wall_s": time.time() - start})
+        json.dump(result, open(keep, "w"), indent=1)
+        print("    %.0f ms per coupling (%s), peak %.0f MB" % (result["total_ms"], ", ".join(
+            "%s %.1f" % (s, result[s]) for s in STAGES), result["peak_rss_mb"]), flush=True)
+        kept.append(result)
+    median = dict(kept[0])
+    for key, value in kept[0].items():
+        if isinstance(value, float) and key not in ("packing_s",):
+            median[key] = statistics.median(r[key] for r in kept)
+    median["max_held"] = max(r["max_held"] for r in kept)
+    median["repeats"] = len(kept)
+    return median
 
 
 def exchange_runs(work, bed, ranks_list, model, refresh):
@@ -311,7 +346,8 @@ def write_table(out, results, rows):
             per("dem")/DEM_STEPS, per("exchange"), per("voidfraction"), per("forces"),
             1e3*r["fluid"]/(r["cells"]/ranks), r["peak_rss_mb"], r["peak_rss_mb"]*1e6*ranks/n,
             r["max_held"], r["packing_s"]))
-    lines += ["", "Per coupling, the median after the first sixth of the couplings; µs per particle "
+    lines += ["", "Per coupling, the median after the first sixth of the couplings, median over %d "
+              "repeats; µs per particle " % min(r.get("repeats", 1) for r in results) +
               "of a rank's share (particles / ranks). The exchange:", "",
               "| ranks | rank | owns | holds | sends (bytes) to ranks | receives (bytes) from ranks "
               "| cells | processor faces |", "|" + "---|" * 8]
@@ -384,6 +420,7 @@ def main():
     parser.add_argument("--exchange-bed", default="1e5")
     parser.add_argument("--exchange-ranks", default="2,4,8")
     parser.add_argument("--model", default="analytical")
+    parser.add_argument("--repeats", type=int, default=3, help="runs of each (bed, ranks); medians over them")
     parser.add_argument("--refresh", action="store_true")
     parser.add_argument("--short", action="store_true", help="the 10^4 bed, a few couplings, into build/")
     args = parser.parse_args()
@@ -413,7 +450,8 @@ def main():
         ", ".join(beds), args.ranks, args.couplings, args.model), flush=True)
     for bed in beds:
         for ranks in ranks_list:
-            results.append(series_run(work, bed, ranks, args.couplings, args.model, args.refresh, estimate))
+            results.append(series_run(work, bed, ranks, args.couplings, args.model, args.refresh, estimate,
+                                      1 if args.short else args.repeats))
     rows = exchange_runs(work, args.exchange_bed, [int(r) for r in args.exchange_ranks.split(",")],
                          args.model, args.refresh)
     write_series(out, results)

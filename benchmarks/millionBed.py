@@ -49,13 +49,6 @@ COUPLING = re.compile(r"^coupling (\d+): .*; wall seconds since the last couplin
 TIME = re.compile(r"^Time = (\S+)$")
 
 
-def shell(cmd, cwd, log):
-    with open(os.path.join(cwd, log), "w") as out:
-        rc = subprocess.call(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT, shell=True)
-    if rc != 0:
-        sys.exit("millionBed: '%s' failed in %s, see %s" % (cmd, cwd, log))
-
-
 def entry(path, name):
     m = re.search(r"^\s*%s\s+(\S+?);" % name, open(path).read(), re.M)
     if not m:
@@ -93,7 +86,7 @@ def coarse_run(fine, h, model, end):
             return result
     print("  %s: scaleCase -factor %g -parcels %s (the fluid coarsened with the parcels)" % (name, h, LAW),
           flush=True)
-    shell("scaleCase -factor %g -parcels %s -output %s -overwrite" % (h, LAW, case), fine, "log.scaleCase." + name)
+    couplingScale.sh("scaleCase -factor %g -parcels %s -output %s -overwrite" % (h, LAW, case), fine, "log.scaleCase." + name)
     text = open(os.path.join(fine, "log.scaleCase." + name)).read()
     for line in text.split("\n"):
         if re.search(r"cells|deltaT|couplingInterval|count|radius", line) and "->" in line:
@@ -102,14 +95,14 @@ def coarse_run(fine, h, model, end):
                        "voidFractionModel   %s;" % model)
     os.makedirs(os.path.join(case, "DEM", "post"), exist_ok=True)
     start = time.time()
-    shell("mpirun -np 2 liggghts -in in.lattice -log post/log.packing -screen post/screen.packing",
+    couplingScale.sh("mpirun -np 2 liggghts -in in.lattice -log post/log.packing -screen post/screen.packing",
           os.path.join(case, "DEM"), "post/log.mpirun")
     packing = time.time() - start
     for d in glob.glob(os.path.join(case, "processor*")) + [os.path.join(case, "0")]:
         shutil.rmtree(d, ignore_errors=True)
     shutil.copytree(os.path.join(case, "0.orig"), os.path.join(case, "0"))
-    shell("blockMesh", case, "log.blockMesh")
-    shell("decomposePar -force", case, "log.decomposePar")
+    couplingScale.sh("blockMesh", case, "log.blockMesh")
+    couplingScale.sh("decomposePar -force", case, "log.decomposePar")
     print("    packed in %.0f s; %g s on %d ranks (progress below)" % (packing, end, RANKS), flush=True)
     start = time.time()
     rc = subprocess.call([os.path.join(ROOT, "etc", "runWithProgress"), "log.pimpleDEMFoam", "mpirun", "-np",

@@ -59,11 +59,13 @@ EXCHANGE = re.compile(r"^exchange rank (\d+): owns (\d+) holds (\d+) sends (\d+)
                       r"cells (\d+) processor faces (\d+) area (\S+) m2$")
 
 
-# The packing, from in.parameters alone (so that scaleCase -parcels makes the
-# parcels' packing of it): count beads of the radius on a lattice with GAP
-# spacing filling the width and depth, whole layers then the rows of a last
-# one, a random jitter, and SETTLE_STEPS steps under gravity.
-LATTICE = """# The bed on a lattice with gaps and a random jitter, settled under
+def lattice_script(gap=GAP, jitter=0.005, settle=SETTLE_STEPS*1e-5):
+    """The packing, from in.parameters alone (so that scaleCase -parcels
+    makes the parcels' packing of it): count beads of the radius on a lattice
+    of spacing gap diameters filling the width and depth, whole layers then
+    the rows of a last one, moved at random by up to jitter diameters, and
+    settled under gravity for settle seconds."""
+    return """# The bed on a lattice with gaps and a random jitter, settled under
 # gravity; writes post/packed.restart.
 atom_style      granular
 atom_modify     map array
@@ -84,6 +86,8 @@ variable        rows equal floor((${count}-${layers}*${nx}*${ny})/${nx}+1e-6)
 variable        full equal ${layers}*${spacing}
 variable        partial equal ${full}+${spacing}
 variable        rowsEnd equal ${rows}*${ay}
+variable        jitter equal %(jitter)g*${diameter}
+variable        settleSteps equal round(%(settle)g/${demStep})
 region          domain block 0 ${width} 0 ${depth} ${bottom} ${top} units box
 create_box      1 domain
 lattice         custom 1.0 a1 ${ax} 0 0 a2 0 ${ay} 0 a3 0 0 ${spacing} basis 0.5 0.5 0.5
@@ -93,14 +97,14 @@ if              "${rows} > 0" then &
                 "region top block 0 ${width} 0 ${rowsEnd} ${full} ${partial} units box" &
                 "create_atoms 1 region top"
 set             group all diameter ${diameter} density ${density}
-displace_atoms  all random %(jitter)g %(jitter)g %(jitter)g 49979687 units box
+displace_atoms  all random ${jitter} ${jitter} ${jitter} 49979687 units box
 include         in.settings
 thermo          500
 thermo_style    custom step atoms ke
-run             %(steps)d
+run             ${settleSteps}
 reset_timestep  0
 write_restart   post/packed.restart
-""" % {"gap": GAP, "jitter": 5e-6, "steps": SETTLE_STEPS}
+""" % {"gap": gap, "jitter": jitter, "settle": settle}
 
 
 def edit(path, pattern, replacement):
@@ -127,7 +131,7 @@ def prepare(case, bed):
     edit(params, r"^(variable depth\s+equal\s+)\S+", r"\g<1>%.9g" % depth)
     edit(params, r"^(variable count\s+equal\s+)\S+", r"\g<1>%d" % count)
     with open(os.path.join(case, "DEM", "in.lattice"), "w") as f:
-        f.write(LATTICE)
+        f.write(lattice_script())
     cells = [max(1, int(round(v/CELL))) for v in (width, depth, 0.120, 0.006)]
     w, d = 1e3*width, 1e3*depth
     template = open(os.path.join(case, "system", "blockMeshDict.template")).read()

@@ -622,8 +622,8 @@ def test_coupling_scale():
         expected += int(meets.sum())
     rows = [e for e in exchange if e["ranks"] == "2"]
     held = sum(int(e["holds"]) for e in rows)
-    check("2 ranks: the particles held = those whose spheres meet each slab (%d of %d particles)"
-          % (len(x), held), held == expected, "(held %d, geometry %d)" % (held, expected))
+    check("2 ranks: the particles held = those whose spheres meet each slab (%d beads)" % len(x),
+          held == expected, "(held %d, geometry %d)" % (held, expected))
 
 
 def main():

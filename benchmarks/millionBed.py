@@ -21,8 +21,11 @@ Resumable: each finished run's result is kept in build/millionBed/<run>/
 result.json. Writes benchmarks/millionBed/results/summary.csv, table.md and
 beds.png (a slice of each bed at the end).
 
+--z-factor N multiplies the coarse mesh's cells in z by N after scaleCase
+(runs named h<h>_<model>_z<N>): how many cells tall the bed must be.
+
 usage: benchmarks/millionBed.py [--factors 4,3,2] [--models analytical,kernel]
-                                [--end 2.0] [--report]
+                                [--end 2.0] [--z-factor 1] [--report]
 """
 import argparse
 import glob
@@ -77,8 +80,19 @@ def fine_case(end):
     return case
 
 
-def coarse_run(fine, h, model, end):
-    name = "h%g_%s" % (h, model)
+def refine_height(case, factor):
+    """Multiply the coarse mesh's cell counts in z by factor (the check of
+    how many cells tall the bed must be)."""
+    path = os.path.join(case, "system", "blockMeshDict")
+    text = re.sub(r"\((\d+) (\d+) (\d+)\) simpleGrading",
+                  lambda m: "(%s %s %d) simpleGrading" % (m.group(1), m.group(2), factor*int(m.group(3))),
+                  open(path).read())
+    open(path, "w").write(text)
+    print("    cells in z multiplied by %d: the bed %d times as many cells tall" % (factor, factor), flush=True)
+
+
+def coarse_run(fine, h, model, end, z_factor=1):
+    name = "h%g_%s%s" % (h, model, "" if z_factor == 1 else "_z%d" % z_factor)
     case = os.path.join(WORK, name)
     keep = os.path.join(case, "result.json")
     if os.path.exists(keep):
@@ -95,6 +109,8 @@ def coarse_run(fine, h, model, end):
             print("    " + line.strip(), flush=True)
     couplingScale.edit(os.path.join(case, "constant", "couplingProperties"), r"^voidFractionModel\s+\w+;",
                        "voidFractionModel   %s;" % model)
+    if z_factor != 1:
+        refine_height(case, z_factor)
     os.makedirs(os.path.join(case, "DEM", "post"), exist_ok=True)
     # a random packing: the lattice of the scale series (2 % gaps) settles
     # into columns, a simple cubic stack (solid fraction 0.52) that 1 m/s
@@ -119,6 +135,7 @@ def coarse_run(fine, h, model, end):
         sys.exit("millionBed: the run failed, see %s/log.pimpleDEMFoam" % case)
     result = analyse(case)
     result.update({"name": name, "h": h, "model": model, "law": LAW, "end": end, "packing_s": packing,
+                   "z_factor": z_factor,
                    "wall_s": time.time() - start})
     json.dump(result, open(keep, "w"), indent=1)
     print("    pressure drop / bed weight %.3f, bed height %.1f mm, %.0f s per simulated second" % (
@@ -145,6 +162,25 @@ def bed_height(x, r):
         if acc >= 0.95*total:
             return z
     return pairs[-1][0]
+
+
+def snapshots(case, dt):
+    """The VTK particle files written after SETTLE, in time order."""
+    paths = sorted(glob.glob(os.path.join(case, "VTK", "particles_*.vtk")),
+                   key=lambda p: int(re.findall(r"_(\d+)\.vtk", p)[0]))
+    return [p for p in paths if int(re.findall(r"_(\d+)\.vtk", p)[0])*dt > SETTLE + 1e-9]
+
+
+def on_distributor(case):
+    """The fraction of the parcels touching the distributor (lowest point
+    within 5 % of a radius of z = 0), averaged over the snapshots after
+    SETTLE: the weight that can rest on it rather than on the gas."""
+    dt = float(entry(os.path.join(case, "system", "controlDict"), "deltaT"))
+    fractions = []
+    for path in snapshots(case, dt):
+        x, r = read_vtk(path)
+        fractions.append(sum(1 for p, q in zip(x, r) if p[2] - q < 0.05*q)/len(x))
+    return statistics.mean(fractions) if fractions else float("nan")
 
 
 def analyse(case):
@@ -175,17 +211,13 @@ def analyse(case):
     interval = int(entry(os.path.join(case, "constant", "couplingProperties"), "couplingInterval"))
     dem_dt = dem_variable(case, "demStep")
     coupling_time = max(dt, interval*dem_dt)
-    heights = []
-    for path in sorted(glob.glob(os.path.join(case, "VTK", "particles_*.vtk")),
-                       key=lambda p: int(re.findall(r"_(\d+)\.vtk", p)[0])):
-        step = int(re.findall(r"_(\d+)\.vtk", path)[0])
-        if step*dt > SETTLE + 1e-9:
-            heights.append(bed_height(*read_vtk(path)))
+    heights = [bed_height(*read_vtk(path)) for path in snapshots(case, dt)]
     return {"particles": n, "radius_m": radius, "weight_pa": weight, "dp_pa": statistics.mean(dp),
             "dp_over_weight": statistics.mean(dp)/weight,
             "dp_halves": [statistics.mean(dp[:half])/weight, statistics.mean(dp[half:])/weight],
             "bed_height_m": statistics.mean(heights) if heights else float("nan"),
             "wall_per_simulated_s": sum(walls)/(len(walls)*coupling_time) if walls else float("nan"),
+            "on_distributor": on_distributor(case),
             "cells": int(re.search(r"nCells: (\d+)", open(os.path.join(case, "log.blockMesh")).read()).group(1)),
             "end_time": end}
 
@@ -200,24 +232,31 @@ def fine_cost():
     sys.exit("millionBed: no 10^6 row on %d ranks in %s (run benchmarks/couplingScale.py)" % (RANKS, path))
 
 
+def order(r):
+    return (r["model"], -r["h"], r.get("z_factor", 1))
+
+
 def report(results):
     fine_s, fine_n, fine_cells = fine_cost()
     os.makedirs(RESULTS, exist_ok=True)
-    columns = ("model", "h", "law", "particles", "cells", "end_s", "dp_over_weight", "bed_height_mm",
-               "wall_per_simulated_s", "speedup")
-    lines = ["| model | h | parcels | cells | simulated s | pressure drop / bed weight (halves) "
-             "| bed height mm | wall s per simulated s | saving |", "|---|---|---|---|---|---|---|---|---|",
-             "| fine | 1 | %d | %d | 30 couplings | | | %.0f | 1 |" % (fine_n, fine_cells, fine_s)]
+    columns = ("model", "h", "law", "z_factor", "particles", "cells", "end_s", "dp_over_weight",
+               "on_distributor", "bed_height_mm", "wall_per_simulated_s", "speedup")
+    lines = ["| model | h | cells in z | parcels | cells | simulated s | pressure drop / bed weight (halves) "
+             "| on the distributor | bed height mm | wall s per simulated s | saving |",
+             "|---|---|---|---|---|---|---|---|---|---|---|",
+             "| fine | 1 | | %d | %d | 30 couplings | | | | %.0f | 1 |" % (fine_n, fine_cells, fine_s)]
     with open(os.path.join(RESULTS, "summary.csv"), "w") as f:
         f.write(",".join(columns) + "\n")
-        for r in sorted(results, key=lambda r: (r["model"], -r["h"])):
+        for r in sorted(results, key=order):
             speedup = fine_s/r["wall_per_simulated_s"]
-            f.write("%s,%g,%s,%d,%d,%g,%.4f,%.2f,%.1f,%.1f\n" % (
-                r["model"], r["h"], r["law"], r["particles"], r["cells"], r["end"], r["dp_over_weight"],
-                1e3*r["bed_height_m"], r["wall_per_simulated_s"], speedup))
-            lines.append("| %s | %g | %d | %d | %g | %.3f (%.3f, %.3f) | %.1f | %.0f | %.0f |" % (
-                r["model"], r["h"], r["particles"], r["cells"], r["end"], r["dp_over_weight"], r["dp_halves"][0],
-                r["dp_halves"][1], 1e3*r["bed_height_m"], r["wall_per_simulated_s"], speedup))
+            z = r.get("z_factor", 1)
+            f.write("%s,%g,%s,%d,%d,%d,%g,%.4f,%.4f,%.2f,%.1f,%.1f\n" % (
+                r["model"], r["h"], r["law"], z, r["particles"], r["cells"], r["end"], r["dp_over_weight"],
+                r["on_distributor"], 1e3*r["bed_height_m"], r["wall_per_simulated_s"], speedup))
+            lines.append("| %s | %g | %s | %d | %d | %g | %.3f (%.3f, %.3f) | %.3f | %.1f | %.0f | %.0f |" % (
+                r["model"], r["h"], "coarsened" if z == 1 else "coarsened, then x %d" % z, r["particles"],
+                r["cells"], r["end"], r["dp_over_weight"], r["dp_halves"][0],
+                r["dp_halves"][1], r["on_distributor"], 1e3*r["bed_height_m"], r["wall_per_simulated_s"], speedup))
     open(os.path.join(RESULTS, "table.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
     plot(results)
@@ -230,7 +269,7 @@ def plot(results):
         import matplotlib.pyplot as plt
     except ImportError:
         return
-    runs = sorted(results, key=lambda r: (r["model"], -r["h"]))
+    runs = sorted(results, key=order)
     fig, axes = plt.subplots(1, len(runs), figsize=(3.2*len(runs), 3.6), squeeze=False)
     for ax, r in zip(axes[0], runs):
         case = os.path.join(WORK, r["name"])
@@ -246,7 +285,9 @@ def plot(results):
         ax.set_xlim(0, 1e3*dem_variable(case, "width"))
         ax.set_ylim(0, 120)
         ax.set_aspect("equal")
-        ax.set_title("%s, h = %g\n%d parcels, t = %g s" % (r["model"], r["h"], r["particles"], r["end"]),
+        ax.set_title("%s, h = %g%s\n%d parcels, t = %g s" % (
+            r["model"], r["h"], "" if r.get("z_factor", 1) == 1 else ", cells in z x %d" % r["z_factor"],
+            r["particles"], r["end"]),
                      fontsize=8)
         ax.set_xlabel("x mm")
     axes[0][0].set_ylabel("z mm")
@@ -259,6 +300,8 @@ def main():
     parser.add_argument("--factors", default="4,3,2")
     parser.add_argument("--models", default="analytical,kernel")
     parser.add_argument("--end", type=float, default=2.0)
+    parser.add_argument("--z-factor", type=int, default=1,
+                        help="cells in z times this on the coarse mesh (how many cells tall the bed must be)")
     parser.add_argument("--report", action="store_true", help="only the table and plot of the kept runs")
     args = parser.parse_args()
     os.environ.setdefault("VFM_PROJECT_DIR", ROOT)
@@ -266,12 +309,16 @@ def main():
     results = []
     if args.report:
         for keep in glob.glob(os.path.join(WORK, "*", "result.json")):
-            results.append(json.load(open(keep)))
+            result = json.load(open(keep))
+            if "on_distributor" not in result:
+                result["on_distributor"] = on_distributor(os.path.dirname(keep))
+                json.dump(result, open(keep, "w"), indent=1)
+            results.append(result)
     else:
         fine = fine_case(args.end)
         for h in [float(f) for f in args.factors.split(",")]:
             for model in args.models.split(","):
-                results.append(coarse_run(fine, h, model, args.end))
+                results.append(coarse_run(fine, h, model, args.end, args.z_factor))
     report(results)
 
 

@@ -3,11 +3,16 @@
 """The coarse-grained bubbling bed against the fine one.
 
 The fine system is tutorials/fluidisedBed (10,000 glass beads of 1 mm in
-air, a 48 x 6 mm slice periodic in x and y, cells of 3 mm, inlet 1 m/s).
-Each coarse system is `scaleCase -factor h -parcels <law> -keepMesh` of it: parcels of
-h^3 beads on the same mesh, the drag scaled by h^3 (cubic) or h^2 (exact).
-Each run packs its bed with LIGGGHTS, runs pimpleDEMFoam serially and
-records:
+air, a 48 x 6 mm slice periodic in x and y, cells of 3 mm, inlet 1 m/s);
+--bed wide makes it 96 x 24 mm with 80,000 beads (the same beads, air,
+inlet and cells), wide and deep enough that the mesh coarsened by h = 4
+still has 8 cells across and 2 through the depth.
+Each coarse system is `scaleCase -factor h -parcels <law>` of it: parcels of
+h^3 beads, the drag scaled by h^3 (cubic) or h^2 (exact), with --mesh fine
+(-keepMesh: the fine bed's mesh and steps) or --mesh coarsened (cells,
+fluid and coupling steps coarsened with the parcels as scaleCase prints).
+Each run packs its bed with LIGGGHTS, runs pimpleDEMFoam on --ranks ranks
+and records:
   - bubbling (inlet 1 m/s, END s): the pressure drop averaged over
     t > SETTLE s against the bed weight per area, its fluctuation, the bed
     height (the height below which 95 % of the particles' volume lies,
@@ -19,10 +24,16 @@ records:
     fixed bed's pressure drop, a least-squares a U + b U^2 over
     U < FIXED_BED_U, reaches the bed weight. Reference: Wen and Yu's
     correlation, Re_mf = sqrt(33.7^2 + 0.0408 Ar) - 33.7.
-Each finished run writes <name>.json in results/runs/ and is not run again
-(the study resumes); --report writes the table (results/table.md) and the plots (profiles.png, ramp.png).
+Each finished run writes <name>.json in results/runs/ (results/wide/runs/
+for the wide bed) and is not run again (the study resumes); --report writes
+the table (table.md), the plots (profiles.png, ramp.png) of each bed and
+results/summary.csv, one row per coarse run of every bed: the pressure
+drop, Umf, bed height and fluid fraction profile against the fine bed's
+(same bed, same model; the coarse profile interpolated to the fine bed's
+cell layers) and the speed-up in wall-clock time per simulated second.
 
-usage: study.py [--models analytical,kernel,centroid] [--factors 1,1.5,2,3]
+usage: study.py [--bed tutorial|wide] [--mesh fine|coarsened] [--ranks 1]
+                [--models analytical,kernel,centroid] [--factors 1,1.5,2,3]
                 [--laws cubic,exact] [--end 2.0] [--ramp] [--jobs 2]
                 [--report] [--results DIR]
 """
@@ -32,8 +43,11 @@ import math
 import os
 import re
 import shutil
+import subprocess
 import sys
 import time
+
+import numpy as np
 from concurrent.futures import ProcessPoolExecutor, as_completed
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -42,7 +56,6 @@ TUTORIAL = os.path.join(ROOT, "tutorials", "fluidisedBed")
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 sys.path.insert(0, TUTORIAL)
 from foamCase import cell_centres, read_scalar_field, sh  # noqa: E402
-from couplingTests import edit  # noqa: E402
 _cwd = os.getcwd()
 os.chdir(TUTORIAL)      # bedData reads the fluid and the beads' density where it is imported:
 import bedData  # noqa: E402,I100   the same in every run (parcels keep the beads' density)
@@ -54,7 +67,12 @@ SETTLE = 0.4
 U_BUBBLING = 1.0
 RAMP_HOLD, RAMP_END = 0.3, 1.8
 FIXED_BED_U = 0.35
-MESH = dict(NX=16, NY=2, NZ=40, NZP=2)      # cells of 3 mm, as the tutorial's default
+# mm across x and y, beads, and cells of 3 mm (the tutorial's default) across x and y
+BEDS = {"tutorial": dict(width=48, depth=6, count=10000, NX=16, NY=2),
+        "wide": dict(width=96, depth=24, count=80000, NX=32, NY=8)}
+MESH_Z = dict(NZ=40, NZP=2)
+OUTPUTS = shutil.ignore_patterns("[1-9]*", "0.[0-9]*", "0", "postProcessing", "VTK", "log.*", "parcels_h*",
+                                 "stress", "processor*", "*.png", "*.result", "post")
 
 
 def shell(cmd, cwd, log=None):
@@ -67,30 +85,80 @@ def shell(cmd, cwd, log=None):
         raise RuntimeError("'%s' failed in %s%s" % (cmd, cwd, " (see %s)" % log if log else ""))
 
 
-def run_name(model, h, law, ramp):
-    return "%s_%s_h%g%s" % ("ramp" if ramp else "bubbling", model, h, "" if h == 1 else "_" + law)
+def set_entry(path, pattern, replacement):
+    """re.sub in a file, the pattern required to match (the value may already be the one set)"""
+    text = open(path).read()
+    if not re.search(pattern, text, re.M):
+        raise RuntimeError("%s: no match for %r" % (path, pattern))
+    with open(path, "w") as f:
+        f.write(re.sub(pattern, replacement, text, flags=re.M))
 
 
-def make_case(case, model, h, law, ramp, end):
+def run_name(model, h, law, ramp, mesh="fine"):
+    return "%s_%s_h%g%s%s" % ("ramp" if ramp else "bubbling", model, h, "" if h == 1 else "_" + law,
+                              "_coarsened" if h != 1 and mesh == "coarsened" else "")
+
+
+def bed_dirs(bed, results):
+    """(results, work) directories of a bed"""
+    if bed == "tutorial":
+        return results, WORK
+    return os.path.join(results, bed), os.path.join(WORK, bed)
+
+
+def vertices_of(template, width, depth):
+    """the blockMeshDict template's vertices with x = 48 mm moved to width and y = 6 mm to depth"""
+    head, rest = template.split("vertices", 1)
+    body, tail = rest.split("blocks", 1)
+    def move(m):
+        x, y, z = m.groups()
+        return "(%s %s %s)" % ("%g" % width if x == "48" else x, "%g" % depth if y == "6" else y, z)
+    return head + "vertices" + re.sub(r"\((\S+) (\S+) (\S+)\)", move, body) + "blocks" + tail
+
+
+def source_case(bed, work):
+    """The fine system of a bed, meshed for cells of 3 mm: the tutorial, or
+    the tutorial widened (box, beads, mesh) for the wide bed."""
+    spec = BEDS[bed]
+    src = os.path.join(work, "source")
+    if os.path.isfile(os.path.join(src, "system", "blockMeshDict")):
+        return src
+    shutil.rmtree(src, ignore_errors=True)
+    shutil.copytree(TUTORIAL, src, ignore=OUTPUTS)
+    params = os.path.join(src, "DEM", "in.parameters")
+    for name, value in (("width", spec["width"]*1e-3), ("depth", spec["depth"]*1e-3), ("count", spec["count"])):
+        set_entry(params, r"^(variable\s+%s\s+equal\s+)\S+" % name, r"\g<1>%.12g" % value)
+    template = vertices_of(open(os.path.join(src, "system", "blockMeshDict.template")).read(),
+                           spec["width"], spec["depth"]).replace("48 x 6 mm", "%g x %g mm" % (spec["width"], spec["depth"]))
+    counts = dict(MESH_Z, NX=spec["NX"], NY=spec["NY"])
+    for key in sorted(counts, key=len, reverse=True):       # NZP before NZ
+        template = template.replace(key, str(counts[key]))
+    with open(os.path.join(src, "system", "blockMeshDict"), "w") as f:
+        f.write(template)
+    return src
+
+
+def make_case(case, source, model, h, law, ramp, end, mesh, ranks):
     shutil.rmtree(case, ignore_errors=True)
     if h == 1:
-        shutil.copytree(TUTORIAL, case, ignore=shutil.ignore_patterns(
-            "[1-9]*", "0.[0-9]*", "0", "postProcessing", "VTK", "log.*", "parcels_h*", "stress",
-            "processor*", "*.png", "*.result", "post"))
+        shutil.copytree(source, case, ignore=OUTPUTS)
     else:
-        shell("scaleCase -factor %g -parcels %s -keepMesh -output %s -overwrite" % (h, law, case), TUTORIAL,
-              os.path.join(WORK, "log.scaleCase." + os.path.basename(case)))
+        shell("scaleCase -factor %g -parcels %s%s -output %s -overwrite"
+              % (h, law, " -keepMesh" if mesh == "fine" else "", case), source,
+              os.path.join(os.path.dirname(case), "log.scaleCase." + os.path.basename(case)))
     os.makedirs(os.path.join(case, "DEM", "post"), exist_ok=True)
-    sed = "; ".join("s/%s/%d/g" % (k, v) for k, v in sorted(MESH.items(), key=lambda kv: -len(kv[0])))
-    shell("sed -e '%s' system/blockMeshDict.template > system/blockMeshDict" % sed, case)
-    edit(os.path.join(case, "constant", "couplingProperties"),
+    set_entry(os.path.join(case, "constant", "couplingProperties"),
          r"^voidFractionModel(\s+)\w+;", r"voidFractionModel\g<1>%s;" % model)
-    edit(os.path.join(case, "system", "controlDict"), r"^endTime(\s+)\S+;", r"endTime\g<1>%g;" % end)
+    set_entry(os.path.join(case, "system", "controlDict"), r"^endTime(\s+)\S+;", r"endTime\g<1>%g;" % end)
+    if ranks > 1:
+        decompose = os.path.join(case, "system", "decomposeParDict")
+        set_entry(decompose, r"^numberOfSubdomains .*;", "numberOfSubdomains %d;" % ranks)
+        set_entry(decompose, r"n\s*\(\s*\d+ 1 1\s*\)", "n (%d 1 1)" % ranks)
     shell("rm -rf 0 && cp -r 0.orig 0 && blockMesh", case, os.path.join(case, "log.blockMesh"))
     if ramp:
         table = "table ( (0 (0 0 0)) (0.05 (0 0 %g)) (%g (0 0 %g)) (%g (0 0 0)) (100 (0 0 0)) )" \
             % (U_BUBBLING, RAMP_HOLD, U_BUBBLING, RAMP_END)
-        edit(os.path.join(case, "0", "U"), r"uniformValue\s+table\s*\(.*\);", "uniformValue    %s;" % table)
+        set_entry(os.path.join(case, "0", "U"), r"uniformValue\s+table\s*\(.*\);", "uniformValue    %s;" % table)
 
 
 def inlet_velocity(t):
@@ -99,21 +167,46 @@ def inlet_velocity(t):
     return max(0.0, U_BUBBLING * (RAMP_END - t) / (RAMP_END - RAMP_HOLD))
 
 
-def run_one(model, h, law, ramp, end, results):
-    global RESULTS
-    RESULTS = results
-    name = run_name(model, h, law, ramp)
-    case = os.path.join(WORK, name)
-    make_case(case, model, h, law, ramp, end)
-    shell("cd DEM && liggghts -in in.packing -log post/log.packing -screen post/screen.packing", case)
+def pack(case, ranks):
+    mpi = "mpirun -np %d " % ranks if ranks > 1 else ""
+    shell("cd DEM && %sliggghts -in in.packing -log post/log.packing -screen post/screen.packing" % mpi, case)
+
+
+def solve(case, ranks):
+    """pimpleDEMFoam with its progress printed; the fluid fraction reconstructed after a parallel run"""
+    command = ["mpirun", "-np", str(ranks), "pimpleDEMFoam", "-parallel"] if ranks > 1 else ["pimpleDEMFoam"]
+    if ranks > 1:
+        shell("decomposePar -force", case, os.path.join(case, "log.decomposePar"))
+    rc = subprocess.call([os.path.join(ROOT, "etc", "runWithProgress"), "log.pimpleDEMFoam"] + command, cwd=case)
+    if rc:
+        raise RuntimeError("pimpleDEMFoam failed in %s (see log.pimpleDEMFoam)" % case)
+    if ranks > 1:
+        shell("reconstructPar -fields '(alpha)'", case, os.path.join(case, "log.reconstructPar"))
+
+
+def run_one(model, h, law, ramp, end, results, bed="tutorial", mesh="fine", ranks=1):
+    results, work = bed_dirs(bed, results)
+    name = run_name(model, h, law, ramp, mesh)
+    case = os.path.join(work, name)
+    source = source_case(bed, work)
+    make_case(case, source, model, h, law, ramp, end, mesh, ranks)
+    if h == 1:
+        # the fine bed packed once, in the source, and reused by every model
+        if not os.path.isfile(os.path.join(source, "DEM", "post", "packed.restart")):
+            os.makedirs(os.path.join(source, "DEM", "post"), exist_ok=True)
+            pack(source, ranks)
+        shutil.copy(os.path.join(source, "DEM", "post", "packed.restart"), os.path.join(case, "DEM", "post"))
+    else:
+        pack(case, ranks)
+    print("  %s (%s bed, %d rank%s): %g s" % (name, bed, ranks, "s" if ranks > 1 else "", end), flush=True)
     start = time.time()
-    shell("pimpleDEMFoam", case, os.path.join(case, "log.pimpleDEMFoam"))
+    solve(case, ranks)
     wall = time.time() - start
-    result = dict(name=name, model=model, h=h, law=law if h != 1 else "fine", ramp=ramp,
-                  end=end, wall_per_s=wall / end)
+    result = dict(name=name, model=model, h=h, law=law if h != 1 else "fine", ramp=ramp, bed=bed,
+                  mesh=mesh if h != 1 else "fine", ranks=ranks, end=end, wall_per_s=wall / end)
     result.update(analyse_ramp(case) if ramp else analyse_bubbling(case))
-    os.makedirs(os.path.join(RESULTS, "runs"), exist_ok=True)
-    with open(os.path.join(RESULTS, "runs", name + ".json"), "w") as f:
+    os.makedirs(os.path.join(results, "runs"), exist_ok=True)
+    with open(os.path.join(results, "runs", name + ".json"), "w") as f:
         json.dump(result, f, indent=1)
     return result
 
@@ -125,13 +218,17 @@ def analyse_bubbling(case):
     mean = sum(settled) / len(settled)
     fluct = math.sqrt(sum((p - mean) ** 2 for p in settled) / len(settled)) / mean
     heights = []
+    dt = float(re.search(r"(?m)^deltaT\s+(\S+);", open(os.path.join(case, "system", "controlDict")).read()).group(1))
     for path in bedData.snapshots(case):
         step = int(re.findall(r"_(\d+)\.vtk", path)[0])
-        if step * 1e-4 > SETTLE:
+        if step * dt > SETTLE:
             x, r, _ = bedData.read_vtk(path)
             heights.append(volume_quantile(x[:, 2], r ** 3, 0.95))
     z, alpha = alpha_profile(case)
+    half = len(settled) // 2
     return dict(weight=weight, dp_mean=mean, dp_error=mean / weight - 1, dp_fluctuation=fluct,
+                dp_halves=[sum(settled[:half]) / half / weight - 1,
+                           sum(settled[half:]) / (len(settled) - half) / weight - 1],
                 bed_height=sum(heights) / len(heights) if heights else float("nan"),
                 profile_z=z, profile_alpha=alpha)
 
@@ -192,8 +289,8 @@ def wen_yu_umf():
     return re_mf * mu / (rho * d)
 
 
-def finished():
-    runs = os.path.join(RESULTS, "runs")
+def finished(results):
+    runs = os.path.join(results, "runs")
     if not os.path.isdir(runs):
         return {}
     return {f[:-5]: json.load(open(os.path.join(runs, f))) for f in sorted(os.listdir(runs))
@@ -201,97 +298,143 @@ def finished():
 
 
 def profile_difference(run, fine):
-    """mean |alpha - alpha_fine| over the layers below 1.2 x the fine bed height"""
+    """mean |alpha - alpha_fine| over the fine bed's layers below 1.2 x its
+    bed height, the run's profile interpolated linearly to them"""
     top = 1.2 * fine["bed_height"]
-    pairs = [(a, b) for z, a, b in zip(run["profile_z"], run["profile_alpha"], fine["profile_alpha"])
-             if z < top]
+    pairs = [(float(np.interp(z, run["profile_z"], run["profile_alpha"])), b)
+             for z, b in zip(fine["profile_z"], fine["profile_alpha"]) if z < top]
     return sum(abs(a - b) for a, b in pairs) / len(pairs)
 
 
-def report():
-    runs = finished()
-    if not runs:
-        sys.exit("study.py: no finished runs in %s" % os.path.join(RESULTS, "runs"))
-    umf_ref = wen_yu_umf()
+def compare(runs, umf_ref):
+    """a row per run with its differences from the fine run of its model"""
     rows = []
+    nan = float("nan")
     for r in runs.values():
         fine = runs.get(run_name(r["model"], 1, "", r["ramp"]))
-        row = dict(model=r["model"], h=r["h"], law=r["law"], test="ramp" if r["ramp"] else "bubbling",
-                   wall_per_s=r["wall_per_s"],
-                   speedup=fine["wall_per_s"] / r["wall_per_s"] if fine else float("nan"))
+        row = dict(model=r["model"], h=r["h"], law=r["law"], mesh=r.get("mesh", "fine"),
+                   test="ramp" if r["ramp"] else "bubbling", wall_per_s=r["wall_per_s"],
+                   speedup=fine["wall_per_s"] / r["wall_per_s"] if fine else nan)
         if r["ramp"]:
-            row.update(umf=r["umf"], umf_vs_fine=r["umf"] / fine["umf"] - 1 if fine else float("nan"),
+            row.update(umf=r["umf"], umf_vs_fine=r["umf"] / fine["umf"] - 1 if fine else nan,
                        umf_vs_wen_yu=r["umf"] / umf_ref - 1)
         else:
-            row.update(dp_error=r["dp_error"], dp_vs_fine=r["dp_mean"] / fine["dp_mean"] - 1 if fine
-                       else float("nan"), dp_fluctuation=r["dp_fluctuation"], bed_height=r["bed_height"],
-                       alpha_difference=profile_difference(r, fine) if fine else float("nan"))
+            row.update(dp_error=r["dp_error"], dp_halves=r.get("dp_halves"), dp_vs_fine=r["dp_mean"] / fine["dp_mean"] - 1 if fine else nan,
+                       dp_fluctuation=r["dp_fluctuation"], bed_height=r["bed_height"],
+                       bed_height_vs_fine=r["bed_height"] / fine["bed_height"] - 1 if fine else nan,
+                       alpha_difference=profile_difference(r, fine) if fine else nan)
         rows.append(row)
-    rows.sort(key=lambda x: (x["test"], x["model"], x["h"], x["law"]))
-    write_table(rows, umf_ref)
-    plot(runs, umf_ref)
+    rows.sort(key=lambda x: (x["test"], x["model"], x["h"], x["law"], x["mesh"]))
+    return rows
 
 
-def write_table(rows, umf_ref):
-    lines = ["| model | h | law | dp / bed weight - 1 | dp vs fine | fluctuation | bed height (mm) "
-             "| mean abs. alpha vs fine | s per simulated s | speed-up |", "|---" * 10 + "|"]
+SUMMARY = ("model", "h", "law", "mesh", "dp_vs_fine", "umf_vs_fine", "bed_height_vs_fine", "profile_mad_vs_fine",
+           "speedup", "bed")
+
+
+def summary_rows(rows, bed):
+    """results/summary.csv's rows of a bed: each coarse bubbling run with the
+    Umf of the ramp run of the same model, h, law and mesh"""
+    key = lambda r: (r["model"], r["h"], r["law"], r["mesh"])
+    umf = {key(r): r["umf_vs_fine"] for r in rows if r["test"] == "ramp"}
+    out = []
+    for r in rows:
+        if r["test"] == "bubbling" and r["h"] != 1:
+            out.append((r["model"], "%g" % r["h"], r["law"], r["mesh"], "%.4f" % r["dp_vs_fine"],
+                        "%.4f" % umf.get(key(r), float("nan")), "%.4f" % r["bed_height_vs_fine"],
+                        "%.4f" % r["alpha_difference"], "%.2f" % r["speedup"], bed))
+    return out
+
+
+def report(results):
+    umf_ref = wen_yu_umf()
+    summary = []
+    for bed in BEDS:
+        where, _ = bed_dirs(bed, results)
+        runs = finished(where)
+        if not runs:
+            continue
+        rows = compare(runs, umf_ref)
+        write_table(rows, umf_ref, where)
+        plot(runs, umf_ref, where)
+        summary += summary_rows(rows, bed)
+    if not summary:
+        sys.exit("study.py: no finished runs in %s" % os.path.join(results, "runs"))
+    with open(os.path.join(results, "summary.csv"), "w") as f:
+        f.write(",".join(SUMMARY) + "\n")
+        for row in summary:
+            f.write(",".join(row) + "\n")
+
+
+def write_table(rows, umf_ref, where):
+    lines = ["| model | h | law | mesh | dp / bed weight - 1 (halves) | dp vs fine | fluctuation | bed height (mm) "
+             "| mean abs. alpha vs fine | s per simulated s | speed-up |", "|---" * 11 + "|"]
     for r in (x for x in rows if x["test"] == "bubbling"):
-        lines.append("| %s | %g | %s | %+.1f %% | %+.1f %% | %.1f %% | %.1f | %.4f | %.0f | %.1f |"
-                     % (r["model"], r["h"], r["law"], 100 * r["dp_error"], 100 * r["dp_vs_fine"],
+        halves = " (%+.1f, %+.1f)" % tuple(100 * x for x in r["dp_halves"]) if r["dp_halves"] else ""
+        lines.append("| %s | %g | %s | %s | %+.1f %%%s | %+.1f %% | %.1f %% | %.1f | %.4f | %.0f | %.1f |"
+                     % (r["model"], r["h"], r["law"], r["mesh"], 100 * r["dp_error"], halves, 100 * r["dp_vs_fine"],
                         100 * r["dp_fluctuation"], 1e3 * r["bed_height"], r["alpha_difference"],
                         r["wall_per_s"], r["speedup"]))
     ramp = [x for x in rows if x["test"] == "ramp"]
     if ramp:
         lines += ["", "Wen-Yu: Umf = %.3f m/s" % umf_ref, "",
-                  "| model | h | law | Umf (m/s) | vs fine | vs Wen-Yu | s per simulated s | speed-up |",
-                  "|---" * 8 + "|"]
+                  "| model | h | law | mesh | Umf (m/s) | vs fine | vs Wen-Yu | s per simulated s | speed-up |",
+                  "|---" * 9 + "|"]
         for r in ramp:
-            lines.append("| %s | %g | %s | %.3f | %+.1f %% | %+.1f %% | %.0f | %.1f |"
-                         % (r["model"], r["h"], r["law"], r["umf"], 100 * r["umf_vs_fine"],
+            lines.append("| %s | %g | %s | %s | %.3f | %+.1f %% | %+.1f %% | %.0f | %.1f |"
+                         % (r["model"], r["h"], r["law"], r["mesh"], r["umf"], 100 * r["umf_vs_fine"],
                             100 * r["umf_vs_wen_yu"], r["wall_per_s"], r["speedup"]))
     text = "\n".join(lines) + "\n"
-    with open(os.path.join(RESULTS, "table.md"), "w") as f:
+    with open(os.path.join(where, "table.md"), "w") as f:
         f.write(text)
     print(text)
 
 
-def plot(runs, umf_ref):
+def label(r):
+    if r["h"] == 1:
+        return "fine"
+    return "h = %g %s%s" % (r["h"], r["law"], ", coarsened" if r.get("mesh") == "coarsened" else "")
+
+
+def plot(runs, umf_ref, where):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    order = lambda r: (r["h"], r["law"], r.get("mesh", "fine"))
     bubbling = [r for r in runs.values() if not r["ramp"]]
     models = sorted({r["model"] for r in bubbling})
     if models:
         fig, axes = plt.subplots(1, len(models), figsize=(4 * len(models), 4), squeeze=False)
         for ax, m in zip(axes[0], models):
-            for r in sorted((r for r in bubbling if r["model"] == m), key=lambda r: (r["h"], r["law"])):
-                label = "fine" if r["h"] == 1 else "h = %g %s" % (r["h"], r["law"])
+            for r in sorted((r for r in bubbling if r["model"] == m), key=order):
                 ax.plot(r["profile_alpha"], [1e3 * z for z in r["profile_z"]],
-                        "k-" if r["h"] == 1 else "-", lw=2 if r["h"] == 1 else 1, label=label)
+                        "k-" if r["h"] == 1 else "-", lw=2 if r["h"] == 1 else 1, label=label(r))
             ax.set_title(m)
             ax.set_xlabel("time-averaged fluid fraction")
             ax.set_ylabel("height (mm)")
             ax.legend(fontsize=7)
         fig.tight_layout()
-        fig.savefig(os.path.join(RESULTS, "profiles.png"), dpi=110)
+        fig.savefig(os.path.join(where, "profiles.png"), dpi=110)
     ramp = [r for r in runs.values() if r["ramp"]]
     if ramp:
         fig, ax = plt.subplots(figsize=(5, 4))
-        for r in sorted(ramp, key=lambda r: (r["model"], r["h"], r["law"])):
+        for r in sorted(ramp, key=lambda r: (r["model"],) + order(r)):
             u, p = zip(*r["curve"])
-            label = "%s %s" % (r["model"], "fine" if r["h"] == 1 else "h = %g %s" % (r["h"], r["law"]))
-            ax.plot(u, [x / r["weight"] for x in p], lw=0.8, label=label)
+            ax.plot(u, [x / r["weight"] for x in p], lw=0.8, label="%s %s" % (r["model"], label(r)))
         ax.axvline(umf_ref, color="k", ls="--", lw=1, label="Wen-Yu Umf")
         ax.set_xlabel("inlet velocity (m/s)")
         ax.set_ylabel("pressure drop / bed weight per area")
         ax.legend(fontsize=6)
         fig.tight_layout()
-        fig.savefig(os.path.join(RESULTS, "ramp.png"), dpi=110)
+        fig.savefig(os.path.join(where, "ramp.png"), dpi=110)
 
 
 def main():
-    global RESULTS
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--bed", choices=sorted(BEDS), default="tutorial")
+    p.add_argument("--mesh", choices=("fine", "coarsened"), default="fine",
+                   help="the coarse runs on the fine bed's mesh (-keepMesh) or on the mesh coarsened by h")
+    p.add_argument("--ranks", type=int, default=1)
     p.add_argument("--models", default="analytical,kernel,centroid")
     p.add_argument("--factors", default="1,1.5,2,3")
     p.add_argument("--laws", default="cubic,exact")
@@ -301,27 +444,32 @@ def main():
     p.add_argument("--report", action="store_true")
     p.add_argument("--results", default=RESULTS)
     a = p.parse_args()
-    RESULTS = a.results
     if a.report:
-        report()
+        report(a.results)
         return
     factors = [float(x) for x in a.factors.split(",")]
-    if any(h < 1 for h in factors):
+    if any(not h >= 1 for h in factors):
         sys.exit("study.py: factors must be >= 1")
+    if a.ranks < 1 or a.jobs < 1:
+        sys.exit("study.py: --ranks and --jobs must be at least 1")
     end = RAMP_END if a.ramp else a.end
-    if end <= SETTLE:
+    if not end > SETTLE:
         sys.exit("study.py: --end must exceed the start-up of %g s that the averages leave out" % SETTLE)
+    where, work = bed_dirs(a.bed, a.results)
+    done = finished(where)
     todo = []
     for model in a.models.split(","):
         for h in factors:
             for law in (a.laws.split(",") if h != 1 else ["fine"]):
-                if run_name(model, h, law, a.ramp) not in finished():
+                if run_name(model, h, law, a.ramp, a.mesh) not in done:
                     todo.append((model, h, law))
-    os.makedirs(WORK, exist_ok=True)
-    print("coarse-grained bed: %d runs to do (%s s each)" % (len(todo), end), flush=True)
+    os.makedirs(work, exist_ok=True)
+    print("coarse-grained bed (%s, %s mesh, %d rank%s): %d runs to do (%s s each)"
+          % (a.bed, a.mesh, a.ranks, "s" if a.ranks > 1 else "", len(todo), end), flush=True)
     start = time.time()
     with ProcessPoolExecutor(max_workers=a.jobs) as pool:
-        futures = {pool.submit(run_one, m, h, law, a.ramp, end, RESULTS): (m, h, law) for m, h, law in todo}
+        futures = {pool.submit(run_one, m, h, law, a.ramp, end, a.results, a.bed, a.mesh, a.ranks): (m, h, law)
+                   for m, h, law in todo}
         for n, fut in enumerate(as_completed(futures), 1):
             m, h, law = futures[fut]
             try:
@@ -334,7 +482,7 @@ def main():
             print("  [%d/%d] %s h %g %s: %s (elapsed %.0f s, about %.0f s left)"
                   % (n, len(todo), m, h, law, what, elapsed, elapsed / n * (len(todo) - n)),
                   flush=True)
-    report()
+    report(a.results)
 
 
 if __name__ == "__main__":

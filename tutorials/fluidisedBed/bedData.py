@@ -18,7 +18,6 @@ import caseProperties
 # the fluid and particles of this case (read where the script runs: the case)
 RHO_F = caseProperties.fluid()[1]
 RHO_P, G = caseProperties.particle_density(), caseProperties.gravity()
-AREA = 0.048*0.006
 
 
 def read_vtk(path):
@@ -44,7 +43,8 @@ def bed_weight(case):
     text = open(os.path.join(case, "log.pimpleDEMFoam")).read()
     n = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", text).group(1))
     r = caseProperties.particle_diameter(case)/2
-    return n*4/3*np.pi*r**3*(RHO_P - RHO_F)*G/AREA
+    box = caseProperties.dem_parameters(case)
+    return n*4/3*np.pi*r**3*(RHO_P - RHO_F)*G/(box["width"]*box["depth"])
 
 
 def pressure_drop(case):

@@ -353,9 +353,61 @@ def test_run_bits():
         check("scaleCase%s: ./Allclean runs in the copy" % option, rc == 0, text[-300:])
 
 
+def test_wide_bed_study():
+    print("coarseGrainedBed study: the wide bed and its coarsened cases as set up, and the summary's comparison")
+    sys.path.insert(0, os.path.join(checks.ROOT, "benchmarks", "coarseGrainedBed"))
+    import study
+    study.WORK = os.path.join(WORK, "wideBed")
+    shutil.rmtree(study.WORK, ignore_errors=True)
+    results, work = study.bed_dirs("wide", os.path.join(WORK, "wideBed", "results"))
+    source = study.source_case("wide", work)
+    # worked by hand: 96 x 24 mm in cells of 3 mm is 32 x 8; 80,000 beads / 4^3 = 1250 parcels,
+    # 32/4 x 8/4 x (2/4 -> 1 and 40/4) cells, deltaT 4 x 1e-4; h = 3: 32/3 -> 11, 8/3 -> 3, 40/3 -> 13
+    expect = {(1, "fine"): ("80000", "0.0005", ["(32 8 2)", "(32 8 40)"], 10752, 1e-4),
+              (2, "fine"): ("10000", "0.001", ["(32 8 2)", "(32 8 40)"], 10752, 1e-4),
+              (3, "coarsened"): ("2963", "0.0015", ["(11 3 1)", "(11 3 13)"], 462, 3e-4),
+              (4, "coarsened"): ("1250", "0.002", ["(8 2 1)", "(8 2 10)"], 176, 4e-4)}
+    for (h, mesh), (count, radius, blocks, cells, dt) in expect.items():
+        case = os.path.join(work, study.run_name("kernel", h, "cubic", False, mesh))
+        try:
+            study.make_case(case, source, "kernel", h, "cubic", False, 0.5, mesh, 2)
+        except RuntimeError as e:
+            check("h = %g, %s mesh: set up" % (h, mesh), False, str(e))
+            continue
+        dem = open(os.path.join(case, "DEM", "in.parameters")).read()
+        got = [re.search(r"(?m)^variable\s+%s\s+equal\s+(\S+)" % n, dem).group(1)
+               for n in ("width", "depth", "count", "radius")]
+        control = open(os.path.join(case, "system", "controlDict")).read()
+        ok = (got == ["0.096", "0.024", count, radius]
+              and re.findall(r"hex \([^)]*\) (\([^)]*\))", open(os.path.join(case, "system", "blockMeshDict")).read()) == blocks
+              and "nCells: %d" % cells in open(os.path.join(case, "log.blockMesh")).read()
+              and abs(float(re.search(r"(?m)^deltaT\s+(\S+);", control).group(1)) - dt) < 1e-15
+              and re.search(r"(?m)^voidFractionModel\s+kernel;", open(os.path.join(case, "constant", "couplingProperties")).read())
+              and "numberOfSubdomains 2;" in open(os.path.join(case, "system", "decomposeParDict")).read())
+        check("h = %g, %s mesh: 96 x 24 mm, %s particles of radius %s, blocks %s, %d cells, deltaT %g, "
+              "kernel, 2 ranks" % (h, mesh, count, radius, " ".join(blocks), cells, dt), ok, "(%s)" % got)
+    # the comparison: a coarse profile on other layers, interpolated to the fine bed's
+    fine = dict(profile_z=[0.0015, 0.0045, 0.0075, 0.0105], profile_alpha=[0.40, 0.45, 0.50, 1.0],
+                bed_height=0.008)
+    coarse = dict(profile_z=[0.003, 0.009], profile_alpha=[0.40, 0.60])
+    # at 1.5 mm: 0.40 (held at the first layer); 4.5 mm: 0.45; 7.5 mm: 0.55; 10.5 mm above 1.2 x 8 mm
+    mad = study.profile_difference(coarse, fine)
+    near("profile difference, interpolated: (0 + 0 + 0.05) / 3", mad, 0.05/3, 1e-12)
+    rows = [dict(test="bubbling", model="kernel", h=2, law="cubic", mesh="coarsened", dp_vs_fine=-0.02,
+                 bed_height_vs_fine=0.01, alpha_difference=0.03, speedup=12.5),
+            dict(test="ramp", model="kernel", h=2, law="cubic", mesh="coarsened", umf_vs_fine=0.05),
+            dict(test="ramp", model="kernel", h=2, law="cubic", mesh="fine", umf_vs_fine=0.5)]
+    summary = study.summary_rows(rows, "wide")
+    check("summary row: the ramp of the same mesh, columns in the order of the header",
+          summary == [("kernel", "2", "cubic", "coarsened", "-0.0200", "0.0500", "0.0100", "0.0300", "12.50", "wide")]
+          and study.SUMMARY[:9] == ("model", "h", "law", "mesh", "dp_vs_fine", "umf_vs_fine", "bed_height_vs_fine",
+                                    "profile_mad_vs_fine", "speedup"), str(summary))
+
+
 def main():
     checks.run([test_written_values, test_settling_sphere, test_packed_bed, test_fluidised_bed,
-                test_parcel_parameters, test_coarsened_fluid, test_compression_precision, test_bad_input, test_run_bits], sys.argv[1:])
+                test_parcel_parameters, test_coarsened_fluid, test_compression_precision, test_bad_input, test_run_bits,
+                test_wide_bed_study], sys.argv[1:])
     return checks.summary("scaling")
 
 

@@ -171,16 +171,19 @@ def snapshots(case, dt):
     return [p for p in paths if int(re.findall(r"_(\d+)\.vtk", p)[0])*dt > SETTLE + 1e-9]
 
 
-def on_distributor(case):
-    """The fraction of the parcels touching the distributor (lowest point
-    within 5 % of a radius of z = 0), averaged over the snapshots after
-    SETTLE: the weight that can rest on it rather than on the gas."""
+def bed_measures(case):
+    """Over the snapshots after SETTLE, the mean bed height and the mean
+    fraction of the parcels touching the distributor (lowest point within
+    5 % of a radius of z = 0: weight that can rest on it rather than on the
+    gas), each snapshot read once."""
     dt = float(entry(os.path.join(case, "system", "controlDict"), "deltaT"))
-    fractions = []
+    heights, touching = [], []
     for path in snapshots(case, dt):
         x, r = read_vtk(path)
-        fractions.append(sum(1 for p, q in zip(x, r) if p[2] - q < 0.05*q)/len(x))
-    return statistics.mean(fractions) if fractions else float("nan")
+        heights.append(bed_height(x, r))
+        touching.append(sum(1 for p, q in zip(x, r) if p[2] - q < 0.05*q)/len(x))
+    mean = lambda v: statistics.mean(v) if v else float("nan")
+    return mean(heights), mean(touching)
 
 
 def analyse(case):
@@ -211,13 +214,13 @@ def analyse(case):
     interval = int(entry(os.path.join(case, "constant", "couplingProperties"), "couplingInterval"))
     dem_dt = dem_variable(case, "demStep")
     coupling_time = max(dt, interval*dem_dt)
-    heights = [bed_height(*read_vtk(path)) for path in snapshots(case, dt)]
+    height, touching = bed_measures(case)
     return {"particles": n, "radius_m": radius, "weight_pa": weight, "dp_pa": statistics.mean(dp),
             "dp_over_weight": statistics.mean(dp)/weight,
             "dp_halves": [statistics.mean(dp[:half])/weight, statistics.mean(dp[half:])/weight],
-            "bed_height_m": statistics.mean(heights) if heights else float("nan"),
+            "bed_height_m": height,
             "wall_per_simulated_s": sum(walls)/(len(walls)*coupling_time) if walls else float("nan"),
-            "on_distributor": on_distributor(case),
+            "on_distributor": touching,
             "cells": int(re.search(r"nCells: (\d+)", open(os.path.join(case, "log.blockMesh")).read()).group(1)),
             "end_time": end}
 
@@ -311,7 +314,7 @@ def main():
         for keep in glob.glob(os.path.join(WORK, "*", "result.json")):
             result = json.load(open(keep))
             if "on_distributor" not in result:
-                result["on_distributor"] = on_distributor(os.path.dirname(keep))
+                result["on_distributor"] = bed_measures(os.path.dirname(keep))[1]
                 json.dump(result, open(keep, "w"), indent=1)
             results.append(result)
     else:

@@ -32,8 +32,8 @@ def copy_tutorial(name, dest):
 def edit(path, pattern, replacement):
     with open(path) as f:
         text = f.read()
-    new = re.sub(pattern, replacement, text, flags=re.M)
-    if new == text:
+    new, matches = re.subn(pattern, replacement, text, flags=re.M)
+    if not matches:
         raise RuntimeError("%s: no match for %r" % (path, pattern))
     with open(path, "w") as f:
         f.write(new)

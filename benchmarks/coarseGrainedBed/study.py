@@ -56,6 +56,7 @@ TUTORIAL = os.path.join(ROOT, "tutorials", "fluidisedBed")
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 sys.path.insert(0, TUTORIAL)
 from foamCase import cell_centres, read_scalar_field, sh  # noqa: E402
+from couplingTests import edit  # noqa: E402
 _cwd = os.getcwd()
 os.chdir(TUTORIAL)      # bedData reads the fluid and the beads' density where it is imported:
 import bedData  # noqa: E402,I100   the same in every run (parcels keep the beads' density)
@@ -83,15 +84,6 @@ def shell(cmd, cwd, log=None):
             f.write(out)
     if rc:
         raise RuntimeError("'%s' failed in %s%s" % (cmd, cwd, " (see %s)" % log if log else ""))
-
-
-def set_entry(path, pattern, replacement):
-    """re.sub in a file, the pattern required to match (the value may already be the one set)"""
-    text = open(path).read()
-    if not re.search(pattern, text, re.M):
-        raise RuntimeError("%s: no match for %r" % (path, pattern))
-    with open(path, "w") as f:
-        f.write(re.sub(pattern, replacement, text, flags=re.M))
 
 
 def run_name(model, h, law, ramp, mesh="fine"):
@@ -127,7 +119,7 @@ def source_case(bed, work):
     shutil.copytree(TUTORIAL, src, ignore=OUTPUTS)
     params = os.path.join(src, "DEM", "in.parameters")
     for name, value in (("width", spec["width"]*1e-3), ("depth", spec["depth"]*1e-3), ("count", spec["count"])):
-        set_entry(params, r"^(variable\s+%s\s+equal\s+)\S+" % name, r"\g<1>%.12g" % value)
+        edit(params, r"^(variable\s+%s\s+equal\s+)\S+" % name, r"\g<1>%.12g" % value)
     template = vertices_of(open(os.path.join(src, "system", "blockMeshDict.template")).read(),
                            spec["width"], spec["depth"]).replace("48 x 6 mm", "%g x %g mm" % (spec["width"], spec["depth"]))
     counts = dict(MESH_Z, NX=spec["NX"], NY=spec["NY"])
@@ -147,18 +139,18 @@ def make_case(case, source, model, h, law, ramp, end, mesh, ranks):
               % (h, law, " -keepMesh" if mesh == "fine" else "", case), source,
               os.path.join(os.path.dirname(case), "log.scaleCase." + os.path.basename(case)))
     os.makedirs(os.path.join(case, "DEM", "post"), exist_ok=True)
-    set_entry(os.path.join(case, "constant", "couplingProperties"),
+    edit(os.path.join(case, "constant", "couplingProperties"),
          r"^voidFractionModel(\s+)\w+;", r"voidFractionModel\g<1>%s;" % model)
-    set_entry(os.path.join(case, "system", "controlDict"), r"^endTime(\s+)\S+;", r"endTime\g<1>%g;" % end)
+    edit(os.path.join(case, "system", "controlDict"), r"^endTime(\s+)\S+;", r"endTime\g<1>%g;" % end)
     if ranks > 1:
         decompose = os.path.join(case, "system", "decomposeParDict")
-        set_entry(decompose, r"^numberOfSubdomains .*;", "numberOfSubdomains %d;" % ranks)
-        set_entry(decompose, r"n\s*\(\s*\d+ 1 1\s*\)", "n (%d 1 1)" % ranks)
+        edit(decompose, r"^numberOfSubdomains .*;", "numberOfSubdomains %d;" % ranks)
+        edit(decompose, r"n\s*\(\s*\d+ 1 1\s*\)", "n (%d 1 1)" % ranks)
     shell("rm -rf 0 && cp -r 0.orig 0 && blockMesh", case, os.path.join(case, "log.blockMesh"))
     if ramp:
         table = "table ( (0 (0 0 0)) (0.05 (0 0 %g)) (%g (0 0 %g)) (%g (0 0 0)) (100 (0 0 0)) )" \
             % (U_BUBBLING, RAMP_HOLD, U_BUBBLING, RAMP_END)
-        set_entry(os.path.join(case, "0", "U"), r"uniformValue\s+table\s*\(.*\);", "uniformValue    %s;" % table)
+        edit(os.path.join(case, "0", "U"), r"uniformValue\s+table\s*\(.*\);", "uniformValue    %s;" % table)
 
 
 def inlet_velocity(t):

@@ -592,8 +592,10 @@ def test_coupling_scale():
     for row in series:
         stages = sum(float(row[c]) for c in wanted[4:9])
         total = float(row["total_ms"])
-        check("%s ranks: the stages add up to the wall time between couplings (within 15 %%)" % row["ranks"],
-              0.85*total <= stages <= 1.01*total, "(%.2f of %.2f ms)" % (stages, total))
+        # medians over 8 couplings: the stages' medians need not add up to the total's median, and
+        # the untimed rest (waiting for the other rank) varies, so the lower bound is loose
+        check("%s ranks: the stages add up to the wall time between couplings (within 25 %%)" % row["ranks"],
+              0.75*total <= stages <= 1.01*total, "(%.2f of %.2f ms)" % (stages, total))
         check("%s ranks: the particles are the bed's, peak memory positive" % row["ranks"],
               int(row["particles"]) > 9000 and float(row["peak_rss_mb"]) > 0, "")
     exchange = list(csv.DictReader(open(os.path.join(work, "exchange.csv"))))

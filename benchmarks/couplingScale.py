@@ -232,6 +232,8 @@ def measure(log, skip):
     result = {s: 1e3*statistics.median(r[3 + i] for r in kept) for i, s in enumerate(STAGES)}
     result["stage_sum_ms"] = 1e3*statistics.median(sum(r[3:8]) for r in kept)
     result["total_ms"] = 1e3*statistics.median(r[8] for r in kept)
+    # the timed stages' share of the wall time over all kept couplings (medians need not add up)
+    result["stage_share"] = sum(sum(r[3:8]) for r in kept)/max(sum(r[8] for r in kept), 1e-300)
     result["particles"] = kept[-1][1]
     result["max_held"] = max(r[2] for r in kept)
     result["measured"] = len(kept)

@@ -98,15 +98,15 @@ def history(case, name="history.txt"):
     return np.loadtxt(os.path.join(case, "DEM", "post", name))
 
 
-def serial_and_two_ranks(case, end):
+def serial_and_two_ranks(case, end, split="(1 1 2)"):
     """the DEM histories of case run from its start for end s in serial and on 2 ranks (the
-    mesh split in z, the linear solvers converged to round-off so that only the decomposition
-    differs); the second is None if the parallel run failed"""
+    mesh split as split, in z by default, the linear solvers converged to round-off so that
+    only the decomposition differs); the second is None if the parallel run failed"""
     edit(os.path.join(case, "system", "fvSolution"), r"tolerance 1e-10; relTol [0-9.]+;", "tolerance 1e-13; relTol 0;")
     edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+\S+;", "endTime %g;" % end)
     with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
-                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n %s; }\n" % split)
     sh("rm -rf 0.[0-9]* [1-9]* DEM/post/* && mkdir -p DEM/post && pimpleDEMFoam > log.serial 2>&1", case)
     serial = history(case)
     sh("rm -rf DEM/post/* 0.[0-9]*", case)
@@ -210,7 +210,7 @@ def test_serial_parallel():
     case = copy_tutorial("settlingSphere", "settle-parallel")
     with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
-                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n %s; }\n" % split)
     # linear solvers converged to round-off, so that only the decomposition differs
     edit(os.path.join(case, "system", "fvSolution"), r"tolerance 1e-10; relTol [0-9.]+;", "tolerance 1e-13; relTol 0;")
     sh("cp -r 0.orig 0 && blockMesh && pimpleDEMFoam > log.serial 2>&1", case)
@@ -413,7 +413,7 @@ def test_bad_input():
     edit(os.path.join(case, "DEM", "in.settings"), r"^fix integr", "fix integr all nve/spheres\n#")
     with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
-                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n %s; }\n" % split)
     rc, out = sh("decomposePar -force > /dev/null && timeout 120 mpirun -np 2 pimpleDEMFoam -parallel",
                  case, check=False)
     check("LIGGGHTS error on 2 ranks: every rank stops, message shown",
@@ -430,7 +430,7 @@ def test_bad_input():
           rc == 0 and "removing 1 particles" in out and "coupling 19: 0 particles" in out, out[-400:] if rc else "")
     with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
-                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n %s; }\n" % split)
     rc, out = sh("decomposePar -force > /dev/null && "
                  "timeout 120 mpirun -np 2 pimpleDEMFoam -parallel", case, check=False)
     check("particlesOutside remove on 2 ranks: the particle no rank's cells reach is deleted",
@@ -503,6 +503,100 @@ def test_parcels():
         rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
         check("coarseGraining { %s }: error says '%s'" % (body, needle),
               rc not in (0, 124) and needle in out and "coarseGraining" in out, "" if needle in out else out[-500:])
+
+
+# the 2D settling case: a slab of T = 2 mm, 160 x 384 mm in x and y (cells of 32 mm: a disk of
+# 2 mm leaves its cell's fluid fraction at 0.997), gravity along -y, disks released at y = 0.2 m
+SLAB, DISK_Y = 2e-3, 0.2
+
+
+def disk_case(dest, diameter, coarse, dem_2d=True, two_dimensional=True):
+    """settlingSphere made 2D: the mesh one cell thick in z, LIGGGHTS in 2D (disks in the x-y
+    plane, fix enforce2d), DiFelice drag (written with d^2, so that the count of disks a
+    parcel stands for, h^2 in 2D and not h^3, shows in its drag)"""
+    case = copy_tutorial("settlingSphere", dest)
+    with open(os.path.join(case, "system", "blockMeshDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }\n"
+                "scale 0.001;\nvertices ( (0 0 -1) (160 0 -1) (160 384 -1) (0 384 -1)"
+                " (0 0 1) (160 0 1) (160 384 1) (0 384 1) );\n"
+                "blocks ( hex (0 1 2 3 4 5 6 7) (5 12 1) simpleGrading (1 1 1) );\n"
+                "boundary ( walls { type wall; faces ( (0 4 7 3) (1 2 6 5) (0 1 5 4) ); }\n"
+                "  top { type patch; faces ( (3 7 6 2) ); }\n"
+                "  frontAndBack { type empty; faces ( (0 3 2 1) (4 5 6 7) ); } );\n")
+    for field in ("U", "p"):
+        edit(os.path.join(case, "0.orig", field), r"^(\s*top .*)$", r"\g<1>\n    frontAndBack { type empty; }")
+    edit(os.path.join(case, "constant", "g"), r"^value .*;", "value (0 -9.81 0);")
+    props = os.path.join(case, "constant", "couplingProperties")
+    edit(props, r"^dragModel\s+\w+;.*$", "dragModel DiFelice;")
+    with open(props, "a") as f:
+        f.write(("twoDimensional true;\n" if two_dimensional else "") +
+                ("coarseGraining { %s }\n" % coarse if coarse else ""))
+    edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+0.4;", "endTime 0.25;")
+    set_dem(case, boxWidth=0.16, boxHeight=0.384, releaseXY=0.08, releaseZ=DISK_Y, diameter=diameter)
+    dem = os.path.join(case, "DEM")
+    script = os.path.join(dem, "in.liggghts")
+    if dem_2d:
+        edit(script, r"^atom_style", "dimension       2\natom_style")
+        edit(script, r"^boundary .*$", "boundary        f f p")
+        edit(script, r"^region .*$", "region          domain block 0 ${boxWidth} 0 ${boxHeight} %g %g units box"
+             % (-SLAB/2, SLAB/2))
+        edit(script, r"^create_atoms .*$", "create_atoms    1 single ${releaseXY} ${releaseZ} 0 units box")
+        settings = os.path.join(dem, "in.settings")
+        edit(settings, r"vector 0.0 0.0 -1.0", "vector 0.0 -1.0 0.0")
+        edit(settings, r"zplane 0.0", "yplane 0.0")
+        edit(settings, r"^(fix integr .*)$", r"\g<1>\nfix plane all enforce2d")
+        edit(settings, r"^variable\s+zp equal z\[1\]$", "variable        zp equal y[1]")
+        edit(settings, r"^variable\s+vzp equal vz\[1\]$", "variable        vzp equal vy[1]")
+    sh("cp -r 0.orig 0 && blockMesh > log.blockMesh", case)
+    return case
+
+
+def disk_settling(h, law):
+    """terminal velocity of a 2D parcel of h^2 disks of 1 mm (DiFelice, single-particle limit):
+    the drag of one disk h^2 (cubic) or h (exact) times, the buoyancy on the parcel's slab volume
+    (times 1/h for exact), the weight of its h^2 disks"""
+    volume = math.pi*(h*d/2)**2*SLAB
+    buoyancy = rho_f*volume*g*(1 if law == "cubic" else 1/h)
+    count = h**2 if law == "cubic" else h
+    def excess(v):
+        re = rho_f*v*d/mu
+        return rho_p*volume*g - buoyancy - count*math.pi/8*d*d*rho_f*cd_di_felice(re)*v*v
+    return brentq(excess, 1e-5, 5.0)
+
+
+def test_parcels_2d():
+    print("2D coarse-grained parcels: disks of 1 mm and a 2 mm parcel of them (h = 2) settling in water")
+    def run(dest, diameter, coarse):
+        case = disk_case(dest, diameter, coarse)
+        rc, out = sh("pimpleDEMFoam > log.pimpleDEMFoam 2>&1", case, check=False)
+        log = open(os.path.join(case, "log.pimpleDEMFoam")).read()
+        check("%s: run completed, forces per metre of depth said" % dest,
+              rc == 0 and "2D, forces to the DEM per metre of depth" in log, log[-600:] if rc else "")
+        return case, (-history(case)[-1, 2] if rc == 0 else float("nan"))
+
+    _, single = run("disk-single", 1e-3, None)
+    near("a 1 mm disk settles at DiFelice's terminal velocity (its mass and fluid forces per slab)",
+         single/disk_settling(1, "cubic"), 1.0, 0.02)
+    case, cubic = run("disk-cubic", 2e-3, "factor 2; forceScaling cubic;")
+    near("cubic: the 2 mm parcel settles as one of its 1 mm disks (h^2 drag)", cubic/single, 1.0, 1e-2)
+    check_coupling_log("2D cubic parcel", os.path.join(case, "log.pimpleDEMFoam"), 0.99)
+    _, exact = run("disk-exact", 2e-3, "factor 2; forceScaling exact;")
+    near("exact: parcel terminal velocity / h DiFelice against h^2 weight (Eq. 35)",
+         exact/disk_settling(2, "exact"), 1.0, 0.02)
+    par = os.path.join(WORK, "disk-parallel")
+    shutil.rmtree(par, ignore_errors=True)
+    shutil.copytree(case, par)
+    # the mesh split in y at 192 mm, which the parcel's disk reaches from the start
+    serial, history_par = serial_and_two_ranks(par, 0.1, "(1 2 1)")
+    diff = (np.max(np.abs(history_par[:, 2] - serial[:, 2]))/np.max(np.abs(serial[:, 2]))
+            if history_par is not None else float("nan"))
+    check("2D cubic parcel on 2 ranks: velocity history equal to serial (1e-10)", diff < 1e-10, "(%.1e)" % diff)
+    for dest, dem_2d, two_d, needle in (("disk-3d-dem", False, True, "twoDimensional is set but the DEM script is 3D"),
+                                        ("disk-no-2d", True, False, "but twoDimensional is not set")):
+        case = disk_case(dest, 1e-3, None, dem_2d, two_d)
+        rc, out = sh("timeout 120 pimpleDEMFoam", case, check=False)
+        check("%s: error says '%s'" % (dest, needle), rc not in (0, 124) and needle in out,
+              "" if needle in out else out[-500:])
 
 
 def test_mueller_bed():
@@ -633,7 +727,7 @@ def test_coupling_scale():
 
 def main():
     checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_restart, test_serial_parallel,
-                test_bad_input, test_parcels, test_packed_bed,
+                test_bad_input, test_parcels, test_parcels_2d, test_packed_bed,
                 test_fluidised_bed, test_mueller_bed], sys.argv[1:])
     return checks.summary("coupling")
 

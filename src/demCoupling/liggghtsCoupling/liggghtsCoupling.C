@@ -241,6 +241,12 @@ Foam::scalar Foam::liggghtsCoupling::timeStep() const
 }
 
 
+Foam::label Foam::liggghtsCoupling::dimension() const
+{
+    return lmp_->domain->dimension;
+}
+
+
 void Foam::liggghtsCoupling::setForces
 (
     const labelList& ids,

@@ -16,10 +16,15 @@ const Foam::Enum<Foam::parcelScaling::law> Foam::parcelScaling::lawNames
 });
 
 
-Foam::parcelScaling::parcelScaling(const dictionary& couplingDict)
+Foam::parcelScaling::parcelScaling
+(
+    const dictionary& couplingDict,
+    const bool twoDimensional
+)
 :
     h_(1, scalar(1)),
-    law_(law::cubic)
+    law_(law::cubic),
+    dims_(twoDimensional ? 2 : 3)
 {
     const dictionary* dictPtr = couplingDict.findDict("coarseGraining");
     if (!dictPtr) return;
@@ -55,7 +60,8 @@ Foam::parcelScaling::parcelScaling(const dictionary& couplingDict)
             const std::string which(list ? " (of type " + std::to_string(t + 1) + ")" : "");
             FatalIOErrorInFunction(dict_)
                 << "coarseGraining factor " << h_[t] << which.c_str()
-                << " is below 1 or not finite: a parcel stands for h^3 >= 1 particles"
+                << " is below 1 or not finite: a parcel stands for h^" << dims_
+                << " >= 1 particles"
                 << exit(FatalIOError);
         }
     }

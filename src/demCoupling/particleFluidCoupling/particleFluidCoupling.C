@@ -82,7 +82,8 @@ Foam::particleFluidCoupling::particleFluidCoupling
     pressureGradientForce_(false),
     buoyancy_(false),
     removeOutside_(false),
-    parcels_(dict_),
+    parcels_(dict_, dict_.getOrDefault<bool>("twoDimensional", false)),
+    demForceScale_(1),
     demStepsPerCoupling_(0),
     fluidStepsPerCoupling_(1),
     fluidStep_(0),
@@ -139,6 +140,7 @@ Foam::particleFluidCoupling::particleFluidCoupling
     voidFraction_ = voidFractionModel::New(dict_, mesh);
     distributor_.reset(new particleDistributor(voidFraction_()));
     dem_.reset(new liggghtsCoupling(mesh.time(), dict_));
+    checkDimensions();
     readTimeSteps();
 
     // the initial state: the field the first interval starts from
@@ -174,6 +176,34 @@ void Foam::particleFluidCoupling::readForces()
     removeOutside_ =
         readChoice(dict_, "particlesOutside", outsideActionNames, outsideAction::error)
      == outsideAction::remove;
+}
+
+
+void Foam::particleFluidCoupling::checkDimensions()
+{
+    const bool twoD = voidFraction_->twoDimensional();
+    if (twoD != (dem_->dimension() == 2))
+    {
+        FatalIOErrorInFunction(dict_)
+            << (twoD ? "twoDimensional is set but the DEM script is 3D: 2D"
+                       " coupling needs 'dimension 2' (disks in the x-y plane)"
+                     : "the DEM script is 2D ('dimension 2') but twoDimensional"
+                       " is not set: 2D coupling needs it, on a one-cell-thick mesh")
+            << exit(FatalIOError);
+    }
+    if (!twoD) return;
+    if (voidFraction_->emptyDirection() != vector::Z)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "the mesh is one cell thick in "
+            << vector::componentNames[voidFraction_->emptyDirection()]
+            << ", but a 2D DEM moves its disks in the x-y plane: the mesh must be"
+            << " one cell thick in z" << exit(FatalIOError);
+    }
+    // the disks' masses are per metre of depth, the forces over the slab
+    demForceScale_ = 1/voidFraction_->slabThickness();
+    Info<< "particleFluidCoupling: 2D, forces to the DEM per metre of depth (slab "
+        << voidFraction_->slabThickness() << " m)" << endl;
 }
 
 
@@ -535,6 +565,7 @@ void Foam::particleFluidCoupling::pushForces()
 {
     clock_.timeIncrement();
     vectorField& F = forceMean_;
+    if (demForceScale_ != 1) F *= demForceScale_;
     const particleHolders& holders = voidFraction_->holders();
     if (holders.distributed())
     {

@@ -190,6 +190,19 @@ def test_parcel_parameters():
     check("a case that already has coarseGraining: refused", rc != 0 and "already has coarseGraining" in text)
     rc, text = sh("scaleCase -factor 0.5 -parcels cubic -keepMesh -output %s-half -overwrite" % case, case, check=False)
     check("-parcels with h < 1: refused", rc != 0 and "h^3 >= 1" in text)
+    # a 2D case: parcels of h^2 disks (worked by hand: 10000/9 = 1111 disks; the coarse grain
+    # model's step times h = 3 for a disk's mass h^2, where spheres take h^1.5 = 5.2)
+    flat = "%s-2d" % case
+    shutil.rmtree(flat, ignore_errors=True)
+    shutil.copytree(case, flat)
+    with open(os.path.join(flat, "constant", "couplingProperties"), "a") as f:
+        f.write("twoDimensional true;\n")
+    rc, text = sh("scaleCase -factor 3 -parcels cubic -keepMesh -output %s-h3 -overwrite" % flat, flat, check=False)
+    dem = open(os.path.join(flat + "-h3", "DEM", "in.parameters")).read() if rc == 0 else ""
+    got = tuple(float(re.search(r"(?m)^variable\s+%s\s+equal\s+(\S+)" % n, dem).group(1)) for n in ("count", "demStep")) \
+        if rc == 0 else ()
+    check("2D, h = 3, cubic: parcels of 3^2 disks said, count 1111, DEM step 3e-5",
+          rc == 0 and "parcels of 3^2 disks" in text and got == (1111, 3e-5), text[-400:] if rc else "(got %s)" % (got,))
 
 
 def test_coarsened_fluid():
@@ -197,9 +210,10 @@ def test_coarsened_fluid():
     case = tutorial("fluidisedBed", "coarse-source")
     sh("sed -e 's/NX/16/g; s/NY/2/g; s/NZP/2/g; s/NZ/40/g' system/blockMeshDict.template > system/blockMeshDict",
        case)
-    # worked by hand: counts round(n/h), one cell stays one; deltaT 1e-4 h; the coupling time
-    # 10 x 1e-5 x h in ceil(time / (1e-5 h^1.5)) DEM steps (the cubic law's step, Eq. 17)
-    expect = {2: ("(8 1 1)", "(8 1 20)", 2e-4, 8, 2.5e-5, 500), 3: ("(5 1 1)", "(5 1 13)", 3e-4, 6, 5e-5, 333)}
+    # worked by hand: counts round(n/h), one cell stays one, and x (split in 2 by decomposeParDict,
+    # 16 cells) a multiple of 2: 16/3 -> 2 x round(16/6) = 6, not 5; deltaT 1e-4 h; the coupling
+    # time 10 x 1e-5 x h in ceil(time / (1e-5 h^1.5)) DEM steps (the cubic law's step, Eq. 17)
+    expect = {2: ("(8 1 1)", "(8 1 20)", 2e-4, 8, 2.5e-5, 500), 3: ("(6 1 1)", "(6 1 13)", 3e-4, 6, 5e-5, 333)}
     for h, (plenum, bed, dt, interval, dem, write) in expect.items():
         out = "%s-h%d" % (case, h)
         rc, text = sh("scaleCase -factor %d -parcels cubic -output %s -overwrite" % (h, out), case, check=False)
@@ -210,6 +224,9 @@ def test_coarsened_fluid():
         check("h = %d: blocks %s and %s, as printed" % (h, plenum, bed),
               blocks == [plenum, bed] and "cells (16 2 2) -> %s" % plenum in text
               and "cells (16 2 40) -> %s" % bed in text, "(%s)" % blocks)
+        said = "rounded to multiples of decomposeParDict's n (2 1 1)" in text
+        check("h = %d: the rounding to the decomposition %s" % (h, "said" if h == 3 else "not needed, not said"),
+              said == (h == 3))
         control = open(os.path.join(out, "system", "controlDict")).read()
         got_dt = float(re.search(r"(?m)^deltaT\s+(\S+);", control).group(1))
         got_write = int(re.search(r"(?m)^writeInterval\s+(\S+);", control).group(1))
@@ -362,10 +379,11 @@ def test_wide_bed_study():
     results, work = study.bed_dirs("wide", os.path.join(WORK, "wideBed", "results"))
     source = study.source_case("wide", work)
     # worked by hand: 96 x 24 mm in cells of 3 mm is 32 x 8; 80,000 beads / 4^3 = 1250 parcels,
-    # 32/4 x 8/4 x (2/4 -> 1 and 40/4) cells, deltaT 4 x 1e-4; h = 3: 32/3 -> 11, 8/3 -> 3, 40/3 -> 13
+    # 32/4 x 8/4 x (2/4 -> 1 and 40/4) cells, deltaT 4 x 1e-4; h = 3: 32/3 -> 10 (x is split in 2:
+    # 2 x round(32/6)), 8/3 -> 3, 40/3 -> 13
     expect = {(1, "fine"): ("80000", "0.0005", ["(32 8 2)", "(32 8 40)"], 10752, 1e-4),
               (2, "fine"): ("10000", "0.001", ["(32 8 2)", "(32 8 40)"], 10752, 1e-4),
-              (3, "coarsened"): ("2963", "0.0015", ["(11 3 1)", "(11 3 13)"], 462, 3e-4),
+              (3, "coarsened"): ("2963", "0.0015", ["(10 3 1)", "(10 3 13)"], 420, 3e-4),
               (4, "coarsened"): ("1250", "0.002", ["(8 2 1)", "(8 2 10)"], 176, 4e-4)}
     for (h, mesh), (count, radius, blocks, cells, dt) in expect.items():
         case = os.path.join(work, study.run_name("kernel", h, "cubic", False, mesh))

@@ -431,6 +431,9 @@ void Foam::caseScaler::makeParcels(const word& law, const bool coarsenFluid) con
             << coupling << " already has coarseGraining" << exit(FatalError);
     }
     const label interval = couplingDict.get<label>("couplingInterval");
+    // 2D: a parcel is a disk of h^2 disks, its mass (per depth) h^2
+    const bool twoD = couplingDict.getOrDefault<bool>("twoDimensional", false);
+    const scalar perParcel = std::pow(h_, twoD ? 2 : 3);
     if (coarsenFluid) fluidCoarsener(dir_, h_).coarsen();
     const scalar deltaT = read(dir_/"system"/"controlDict").get<scalar>("deltaT");
     std::ofstream(coupling, std::ios::app)
@@ -455,7 +458,8 @@ void Foam::caseScaler::makeParcels(const word& law, const bool coarsenFluid) con
             ? std::floor(allowed/one + 1e-9)*one
             : one/std::ceil(one/allowed - 1e-9);
     };
-    Info<< "DEM parameters for parcels of " << h_ << "^3 particles (" << law << "):" << nl;
+    Info<< "DEM parameters for parcels of " << h_ << "^" << (twoD ? 2 : 3)
+        << (twoD ? " disks (" : " particles (") << law << "):" << nl;
     rewriteDemParameters
     (
         [&](const demParameter& p)
@@ -463,13 +467,14 @@ void Foam::caseScaler::makeParcels(const word& law, const bool coarsenFluid) con
             scalar v = p.value;
             if (p.roles.found("count"))
             {
-                v = max(std::round(p.value/(h_*h_*h_)), scalar(1));
+                v = max(std::round(p.value/perParcel), scalar(1));
             }
             else if (p.roles.found("timestep"))
             {
                 // exact: h; the coarse grain model, contacts unscaled:
-                // h^3/2 (Zhang, Huang and Zhao 2021, Eq. 17)
-                v = demStep(p.value, p.value*(exact ? h_ : std::pow(h_, 1.5)));
+                // sqrt of the mass, h^3/2 (Zhang, Huang and Zhao 2021,
+                // Eq. 17), or h for disks
+                v = demStep(p.value, p.value*(exact ? h_ : std::sqrt(perParcel)));
             }
             else if (p.roles.found("particle"))
             {

@@ -30,11 +30,33 @@ Foam::fluidCoarsener::fluidCoarsener(const fileName& dir, const scalar h)
 {}
 
 
-Foam::label Foam::fluidCoarsener::coarsened(const label n, const scalar h)
+Foam::label Foam::fluidCoarsener::coarsened(const label n, const scalar h, const label split)
 {
     if (n <= 1) return n;
+    if (split > 1 && n % split == 0)
+    {
+        const label m = label(std::round(n/(h*split)));
+        return m >= 1 ? m*split : -1;
+    }
     const label m = label(std::round(n/h));
     return m >= 1 ? m : -1;
+}
+
+
+Foam::labelVector Foam::fluidCoarsener::decompositionSplits() const
+{
+    labelVector n(1, 1, 1);
+    const fileName file(dir_/"system"/"decomposeParDict");
+    if (!isFile(file)) return n;
+    const dictionary dict(caseFiles::readDict(file));
+    const word method(dict.getOrDefault<word>("method", word::null));
+    if (method != "simple" && method != "hierarchical") return n;
+    for (const word coeffs : {word("coeffs"), word(method + "Coeffs")})
+    {
+        const dictionary* d = dict.findDict(coeffs);
+        if (d && d->found("n")) return d->get<labelVector>("n");
+    }
+    return n;
 }
 
 
@@ -62,6 +84,8 @@ void Foam::fluidCoarsener::coarsenBlocks() const
     std::string out;
     auto from = text.cbegin();
     label index = 0;
+    const labelVector splits(decompositionSplits());
+    bool rounded = false;
     for (std::sregex_iterator b(text.begin(), text.end(), block), end; b != end; ++b, ++index)
     {
         const std::smatch& m = *b;
@@ -81,7 +105,8 @@ void Foam::fluidCoarsener::coarsenBlocks() const
                     << " has cell counts (" << m[2].str().c_str() << "), not three whole"
                     << " numbers" << keep.c_str() << exit(FatalError);
             }
-            const label c = coarsened(label(n), h_);
+            const label c = coarsened(label(n), h_, splits[d]);
+            rounded = rounded || (c != coarsened(label(n), h_) && c > 0);
             if (c < 1)
             {
                 FatalErrorInFunction
@@ -97,6 +122,11 @@ void Foam::fluidCoarsener::coarsenBlocks() const
         out.append(from, m[1].second);
         out += counts.str();
         from = m[3].first;
+    }
+    if (rounded)
+    {
+        Info<< "    (counts rounded to multiples of decomposeParDict's n " << splits
+            << ": each rank's part stays whole cell layers, as the fine mesh's)" << nl;
     }
     if (!index)
     {

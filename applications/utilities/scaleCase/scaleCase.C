@@ -40,6 +40,8 @@ Description
     counts divided by h, the fluid step and the coupling time times h
     (see fluidCoarsener), every change printed. -keepMesh keeps the fluid's
     mesh and steps (the parcels then see h times fewer cells each).
+    A 2D case (twoDimensional true in couplingProperties) gets parcels of
+    h^2 disks.
 
 Usage
     scaleCase -factor 2 -output ../bed-h2

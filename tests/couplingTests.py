@@ -210,7 +210,7 @@ def test_serial_parallel():
     case = copy_tutorial("settlingSphere", "settle-parallel")
     with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
-                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n %s; }\n" % split)
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
     # linear solvers converged to round-off, so that only the decomposition differs
     edit(os.path.join(case, "system", "fvSolution"), r"tolerance 1e-10; relTol [0-9.]+;", "tolerance 1e-13; relTol 0;")
     sh("cp -r 0.orig 0 && blockMesh && pimpleDEMFoam > log.serial 2>&1", case)
@@ -413,7 +413,7 @@ def test_bad_input():
     edit(os.path.join(case, "DEM", "in.settings"), r"^fix integr", "fix integr all nve/spheres\n#")
     with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
-                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n %s; }\n" % split)
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
     rc, out = sh("decomposePar -force > /dev/null && timeout 120 mpirun -np 2 pimpleDEMFoam -parallel",
                  case, check=False)
     check("LIGGGHTS error on 2 ranks: every rank stops, message shown",
@@ -430,7 +430,7 @@ def test_bad_input():
           rc == 0 and "removing 1 particles" in out and "coupling 19: 0 particles" in out, out[-400:] if rc else "")
     with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
-                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n %s; }\n" % split)
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
     rc, out = sh("decomposePar -force > /dev/null && "
                  "timeout 120 mpirun -np 2 pimpleDEMFoam -parallel", case, check=False)
     check("particlesOutside remove on 2 ranks: the particle no rank's cells reach is deleted",

@@ -18,8 +18,11 @@ couplingScale's 10^6 run on 2 ranks (series.csv), so the saving is measured
 on the same bed.
 
 Resumable: each finished run's result is kept in build/millionBed/<run>/
-result.json. Writes benchmarks/millionBed/results/summary.csv, table.md and
-beds.png (a slice of each bed at the end).
+result.json and in benchmarks/millionBed/results/runs/<run>.json; the table
+holds every run kept there, so a run on a fresh machine adds its row to the
+others. Writes benchmarks/millionBed/results/summary.csv, table.md and
+beds.png (a slice of each bed at the end, of the runs whose particles are
+still in build/).
 
 --z-factor N multiplies the coarse mesh's cells in z by N after scaleCase
 (runs named h<h>_<model>_z<N>): how many cells tall the bed must be.
@@ -46,6 +49,7 @@ import couplingScale  # noqa: E402
 
 WORK = os.path.join(ROOT, "build", "millionBed")
 RESULTS = os.path.join(HERE, "millionBed", "results")
+KEPT = os.path.join(RESULTS, "runs")
 SETTLE = 0.4
 PACK_GAP, PACK_JITTER, PACK_SETTLE = 1.25, 0.12, 0.25     # diameters, diameters, s (the tutorial's)
 RANKS = 2
@@ -239,9 +243,21 @@ def order(r):
     return (r["model"], -r["h"], r.get("z_factor", 1))
 
 
-def report(results):
+def with_kept(new):
+    """The runs of results/runs/ with the new ones (kept there too) in place of theirs."""
+    os.makedirs(KEPT, exist_ok=True)
+    for r in new:
+        json.dump(r, open(os.path.join(KEPT, r["name"] + ".json"), "w"), indent=1)
+    runs = {}
+    for path in sorted(glob.glob(os.path.join(KEPT, "*.json"))):
+        r = json.load(open(path))
+        runs[r["name"]] = r
+    return list(runs.values())
+
+
+def report(new):
+    results = with_kept(new)
     fine_s, fine_n, fine_cells = fine_cost()
-    os.makedirs(RESULTS, exist_ok=True)
     columns = ("model", "h", "law", "z_factor", "particles", "cells", "end_s", "dp_over_weight",
                "on_distributor", "bed_height_mm", "wall_per_simulated_s", "speedup")
     lines = ["| model | h | cells in z | parcels | cells | simulated s | pressure drop / bed weight (halves) "
@@ -272,14 +288,14 @@ def plot(results):
         import matplotlib.pyplot as plt
     except ImportError:
         return
-    runs = sorted(results, key=order)
+    runs = [r for r in sorted(results, key=order) if glob.glob(os.path.join(WORK, r["name"], "VTK", "particles_*.vtk"))]
+    if not runs:
+        return
     fig, axes = plt.subplots(1, len(runs), figsize=(3.2*len(runs), 3.6), squeeze=False)
     for ax, r in zip(axes[0], runs):
         case = os.path.join(WORK, r["name"])
         paths = sorted(glob.glob(os.path.join(case, "VTK", "particles_*.vtk")),
                        key=lambda p: int(re.findall(r"_(\d+)\.vtk", p)[0]))
-        if not paths:
-            continue
         x, rad = read_vtk(paths[-1])
         depth = dem_variable(case, "depth")
         # a slice of 3 parcel diameters about the middle of the depth

@@ -45,7 +45,9 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(ROOT, "tutorials"))
 import couplingScale  # noqa: E402
+import particleVtk  # noqa: E402
 
 WORK = os.path.join(ROOT, "build", "millionBed")
 RESULTS = os.path.join(HERE, "millionBed", "results")
@@ -147,16 +149,6 @@ def coarse_run(fine, h, model, end, z_factor=1):
     return result
 
 
-def read_vtk(path):
-    lines = open(path).read().split("\n")
-    at = next(i for i, l in enumerate(lines) if l.startswith("POINTS"))
-    n = int(lines[at].split()[1])
-    x = [[float(v) for v in lines[at + 1 + i].split()] for i in range(n)]
-    at = lines.index("SCALARS radius double 1") + 2
-    r = [float(lines[at + i]) for i in range(n)]
-    return x, r
-
-
 def bed_height(x, r):
     """Below which 95 % of the particles' volume lies."""
     pairs = sorted((p[2], q**3) for p, q in zip(x, r))
@@ -183,7 +175,7 @@ def bed_measures(case):
     dt = float(entry(os.path.join(case, "system", "controlDict"), "deltaT"))
     heights, touching = [], []
     for path in snapshots(case, dt):
-        x, r = read_vtk(path)
+        x, r, _ = particleVtk.read(path)
         heights.append(bed_height(x, r))
         touching.append(sum(1 for p, q in zip(x, r) if p[2] - q < 0.05*q)/len(x))
     mean = lambda v: statistics.mean(v) if v else float("nan")
@@ -296,7 +288,7 @@ def plot(results):
         case = os.path.join(WORK, r["name"])
         paths = sorted(glob.glob(os.path.join(case, "VTK", "particles_*.vtk")),
                        key=lambda p: int(re.findall(r"_(\d+)\.vtk", p)[0]))
-        x, rad = read_vtk(paths[-1])
+        x, rad, _ = particleVtk.read(paths[-1])
         depth = dem_variable(case, "depth")
         # a slice of 3 parcel diameters about the middle of the depth
         keep = [(p[0], p[2]) for p, q in zip(x, rad) if abs(p[1] - depth/2) < 3*q]

@@ -20,6 +20,8 @@ from checks import WORK, check, near
 from foamCase import ROOT, sh
 
 TUTORIALS = os.path.join(ROOT, "tutorials")
+sys.path.insert(0, TUTORIALS)
+import particleVtk  # noqa: E402
 
 
 def copy_tutorial(name, dest):
@@ -659,17 +661,6 @@ def test_mueller_bed():
     check("2 cells across the depth: one depth-averaged void fraction per column of cells (9)",
           len(data) == 9 and np.isfinite(data).all() and data[:, 1].min() >= 0.2 and data[:, 1].max() <= 1, "")
 
-def vtk_particles(path):
-    """Positions and radii of a particles_*.vtk the solver writes."""
-    lines = open(path).read().split("\n")
-    n = int(next(l for l in lines if l.startswith("POINTS")).split()[1])
-    start = next(i for i, l in enumerate(lines) if l.startswith("POINTS")) + 1
-    x = np.array([[float(v) for v in lines[start + i].split()] for i in range(n)])
-    at = next(i for i, l in enumerate(lines) if l.startswith("SCALARS radius")) + 2
-    r = np.array([float(lines[at + i]) for i in range(n)])
-    return x, r
-
-
 def test_coupling_scale():
     """The scale benchmark's short version: its report, the stage split
     against the wall clock, and the exchange counted against the geometry."""
@@ -710,7 +701,7 @@ def test_coupling_scale():
     if not vtks:
         check("the 2-rank exchange run wrote its particles", False, "")
         return
-    x, r = vtk_particles(os.path.join(case, "VTK", sorted(vtks)[-1]))
+    x, r, _ = particleVtk.read(os.path.join(case, "VTK", sorted(vtks)[-1]))
     width = float(re.search(r"^variable width\s+equal\s+(\S+)", open(os.path.join(
         case, "DEM", "in.parameters")).read(), re.M).group(1))
     expected = 0

@@ -14,6 +14,7 @@ sys.path.insert(0, os.path.join(os.environ.get("VFM_PROJECT_DIR",
                                                os.path.join(os.path.dirname(os.path.abspath(__file__)), "../..")),
                                 "tutorials"))
 import caseProperties
+import particleVtk
 
 # the fluid and particles of this case (read where the script runs: the case)
 RHO_F = caseProperties.fluid()[1]
@@ -22,14 +23,7 @@ RHO_P, G = caseProperties.particle_density(), caseProperties.gravity()
 
 def read_vtk(path):
     """positions, radii and velocities of a particles_N.vtk file"""
-    lines = open(path).read().split("\n")
-    n = int(lines[4].split()[1])
-    x = np.array([l.split() for l in lines[5:5 + n]], float)
-    i = lines.index("SCALARS radius double 1") + 2
-    r = np.array(lines[i:i + n], float)
-    i = lines.index("VECTORS velocity double") + 1
-    v = np.array([l.split() for l in lines[i:i + n]], float)
-    return x, r, v
+    return particleVtk.read(path)
 
 
 def snapshots(case):

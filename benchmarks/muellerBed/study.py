@@ -20,14 +20,17 @@ difference from the measured profiles in measured/, and the runs ranked by
 their mean over the four void fraction profiles, beside sediFoam's published
 simulation in published/), results/profiles_U<U>.png and velocity_U<U>.png.
 --refresh derives the finished runs whose cases are still in build/ again
-with the tutorial's current bedProfiles.py, then reports.
+with the tutorial's current bedProfiles.py, then reports. --redo-incomplete
+runs again the finished runs of the selection whose record lacks the particle
+velocity at the measured heights (runs made before the tutorial wrote it).
 
 --depth N runs the same plan with N fluid cells across the bed's depth and
 no-slip front and back walls, named <run>_depth<N>; --end other than 5 s
 adds _<end>s to the name.
 
 usage: study.py [--models M,..] [--velocities 0.6,0.9] [--cells 2.5,1.5,4]
-                [--parcels 1.5,2] [--depth 1] [--end 5] [--report | --refresh]
+                [--parcels 1.5,2] [--depth 1] [--end 5] [--redo-incomplete]
+                [--report | --refresh]
 """
 import argparse
 import glob
@@ -147,6 +150,15 @@ def save(name, case, fields):
 
 HEIGHTS = ("h16.4mm", "h31.2mm")
 VELOCITY_HEIGHTS = {0.6: ("h20.0mm",), 0.9: ("h15.0mm", "h25.0mm", "h35.0mm")}
+
+
+def to_run(name, u, redo_incomplete):
+    """no record yet, or (redo_incomplete) one without the particle velocity at the measured heights"""
+    path = os.path.join(RESULTS, "runs", name + ".json")
+    if not os.path.isfile(path):
+        return True
+    record = json.load(open(path))
+    return redo_incomplete and any("particleVelocity_%s_mean" % h not in record for h in VELOCITY_HEIGHTS[u])
 
 
 def profile(name, height, kind="voidfraction"):
@@ -291,6 +303,8 @@ def main():
     parser.add_argument("--parcels", default="")
     parser.add_argument("--depth", type=int, default=1, help="fluid cells across the depth (no-slip front and back)")
     parser.add_argument("--end", type=float, default=5.0)
+    parser.add_argument("--redo-incomplete", action="store_true",
+                        help="run again the finished runs without the particle velocity at the measured heights")
     parser.add_argument("--report", action="store_true")
     parser.add_argument("--refresh", action="store_true",
                         help="derive the finished runs still in build/ again with the current bedProfiles.py")
@@ -302,7 +316,7 @@ def main():
         todo = [r for r in plan(args.models.split(","), [float(u) for u in args.velocities.split(",")],
                                 [float(c) for c in args.cells.split(",") if c],
                                 [float(h) for h in args.parcels.split(",") if h], args.depth, args.end)
-                if not os.path.isfile(os.path.join(RESULTS, "runs", run_name(*r) + ".json"))]
+                if to_run(run_name(*r), r[1], args.redo_incomplete)]
         for i, (model, u, cells, h, depth, end) in enumerate(todo):
             print("[%d/%d] %s, U = %g m/s, %g s" % (i + 1, len(todo), describe(
                 dict(model=model, cells=cells, parcels=h, depth=depth)), u, end), flush=True)

@@ -373,9 +373,11 @@ def write_table(rows, umf_ref, where):
                   "| model | h | law | mesh | Umf (m/s) | vs fine | vs Wen-Yu | s per simulated s | speed-up |",
                   "|---" * 9 + "|"]
         for r in ramp:
-            lines.append("| %s | %g | %s | %s | %.3f | %+.1f %% | %+.1f %% | %.0f | %.1f |"
-                         % (r["model"], r["h"], r["law"], r["mesh"], r["umf"], 100 * r["umf_vs_fine"],
-                            100 * r["umf_vs_wen_yu"], r["wall_per_s"], r["speedup"]))
+            vs_fine = "%+.1f %%" % (100 * r["umf_vs_fine"]) if r["umf_vs_fine"] == r["umf_vs_fine"] else "no fine run"
+            speedup = "%.1f" % r["speedup"] if r["speedup"] == r["speedup"] else "no fine run"
+            lines.append("| %s | %g | %s | %s | %.3f | %s | %+.1f %% | %.0f | %s |"
+                         % (r["model"], r["h"], r["law"], r["mesh"], r["umf"], vs_fine,
+                            100 * r["umf_vs_wen_yu"], r["wall_per_s"], speedup))
     text = "\n".join(lines) + "\n"
     with open(os.path.join(where, "table.md"), "w") as f:
         f.write(text)

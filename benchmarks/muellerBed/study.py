@@ -22,7 +22,7 @@ simulation in published/), results/profiles_U<U>.png and velocity_U<U>.png.
 --refresh derives the finished runs whose cases are still in build/ again
 with the tutorial's current bedProfiles.py, then reports. --redo-incomplete
 runs again the finished runs of the selection whose record lacks the particle
-velocity at the measured heights (runs made before the tutorial wrote it).
+velocity at the measured heights.
 
 --depth N runs the same plan with N fluid cells across the bed's depth and
 no-slip front and back walls, named <run>_depth<N>; --end other than 5 s

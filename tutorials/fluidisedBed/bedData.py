@@ -21,9 +21,7 @@ RHO_F = caseProperties.fluid()[1]
 RHO_P, G = caseProperties.particle_density(), caseProperties.gravity()
 
 
-def read_vtk(path):
-    """positions, radii and velocities of a particles_N.vtk file"""
-    return particleVtk.read(path)
+read_vtk = particleVtk.read     # positions, radii and velocities of a particles_N.vtk file
 
 
 def snapshots(case):

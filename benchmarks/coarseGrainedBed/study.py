@@ -387,40 +387,51 @@ def write_table(rows, umf_ref, where):
 def label(r):
     if r["h"] == 1:
         return "fine"
-    return "h = %g %s%s" % (r["h"], r["law"], ", coarsened" if r.get("mesh") == "coarsened" else "")
+    mesh = "coarsened" if r.get("mesh") == "coarsened" else "fine mesh"
+    return "h = %g %s, %s" % (r["h"], r["law"], mesh)
 
 
-def plot(runs, umf_ref, where):
+def plot_per_model(runs, draw):
+    """One panel per model, its runs in the order of h; draw(ax, run, style) adds one curve."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    order = lambda r: (r["h"], r["law"], r.get("mesh", "fine"))
-    bubbling = [r for r in runs.values() if not r["ramp"]]
-    models = sorted({r["model"] for r in bubbling})
-    if models:
-        fig, axes = plt.subplots(1, len(models), figsize=(4 * len(models), 4), squeeze=False)
-        for ax, m in zip(axes[0], models):
-            for r in sorted((r for r in bubbling if r["model"] == m), key=order):
-                ax.plot(r["profile_alpha"], [1e3 * z for z in r["profile_z"]],
-                        "k-" if r["h"] == 1 else "-", lw=2 if r["h"] == 1 else 1, label=label(r))
-            ax.set_title(m)
-            ax.set_xlabel("time-averaged fluid fraction")
-            ax.set_ylabel("height (mm)")
-            ax.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(os.path.join(where, "profiles.png"), dpi=110)
-    ramp = [r for r in runs.values() if r["ramp"]]
-    if ramp:
-        fig, ax = plt.subplots(figsize=(5, 4))
-        for r in sorted(ramp, key=lambda r: (r["model"],) + order(r)):
-            u, p = zip(*r["curve"])
-            ax.plot(u, [x / r["weight"] for x in p], lw=0.8, label="%s %s" % (r["model"], label(r)))
-        ax.axvline(umf_ref, color="k", ls="--", lw=1, label="Wen-Yu Umf")
+    models = sorted({r["model"] for r in runs})
+    if not models:
+        return None
+    fig, axes = plt.subplots(1, len(models), figsize=(4 * len(models), 4), squeeze=False)
+    for ax, m in zip(axes[0], models):
+        for r in sorted((r for r in runs if r["model"] == m),
+                        key=lambda r: (r["h"], r["law"], r.get("mesh", "fine"))):
+            fine = r["h"] == 1
+            draw(ax, r, dict(color="k" if fine else None, lw=2 if fine else 1, label=label(r)))
+        ax.set_title(m)
+    return fig, axes[0]
+
+
+def plot(runs, umf_ref, where):
+    def profile(ax, r, style):
+        ax.plot(r["profile_alpha"], [1e3 * z for z in r["profile_z"]], **style)
+        ax.set_xlabel("time-averaged fluid fraction")
+        ax.set_ylabel("height (mm)")
+
+    def ramp(ax, r, style):
+        u, p = zip(*r["curve"])
+        ax.plot(u, [x / r["weight"] for x in p], **dict(style, lw=0.6 * style["lw"]))
         ax.set_xlabel("inlet velocity (m/s)")
         ax.set_ylabel("pressure drop / bed weight per area")
-        ax.legend(fontsize=6)
+
+    for ramps, draw, name in ((False, profile, "profiles.png"), (True, ramp, "ramp.png")):
+        made = plot_per_model([r for r in runs.values() if r["ramp"] == ramps], draw)
+        if made is None:
+            continue
+        fig, axes = made
+        for ax in axes:
+            if ramps:
+                ax.axvline(umf_ref, color="k", ls="--", lw=1, label="Wen-Yu Umf")
+            ax.legend(fontsize=7)
         fig.tight_layout()
-        fig.savefig(os.path.join(where, "ramp.png"), dpi=110)
+        fig.savefig(os.path.join(where, name), dpi=110)
 
 
 def main():

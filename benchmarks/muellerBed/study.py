@@ -26,10 +26,12 @@ velocity at the measured heights.
 
 --depth N runs the same plan with N fluid cells across the bed's depth and
 no-slip front and back walls, named <run>_depth<N>; --end other than 5 s
-adds _<end>s to the name.
+adds _<end>s to the name. --bandwidth B (kernel only) gives the kernel a
+bandwidth of B metres on every mesh instead of 0.4 of the cell size, named
+<run>_b<B in mm>mm: the mesh study at one smoothing length.
 
 usage: study.py [--models M,..] [--velocities 0.6,0.9] [--cells 2.5,1.5,4]
-                [--parcels 1.5,2] [--depth 1] [--end 5] [--redo-incomplete]
+                [--parcels 1.5,2] [--depth 1] [--end 5] [--bandwidth B] [--redo-incomplete]
                 [--report | --refresh]
 """
 import argparse
@@ -55,28 +57,31 @@ MODELS = ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion")
 MESH_MODELS = ("centroid", "analytical", "kernel")
 
 
-def plan(models, velocities, cells, parcels, depth, end):
+def plan(models, velocities, cells, parcels, depth, end, bandwidth=0):
     runs = []
     for c in cells:
         for m in models:
             if c == 2.5 or m in MESH_MODELS:
-                runs += [(m, u, c, 1, depth, end) for u in velocities]
-    return runs + [(m, u, 2.5, h, depth, end) for h in parcels for m in models for u in velocities]
+                runs += [(m, u, c, 1, depth, end, bandwidth) for u in velocities]
+    return runs + [(m, u, 2.5, h, depth, end, bandwidth) for h in parcels for m in models for u in velocities]
 
 
-def run_name(model, u, cells, h=1, depth=1, end=5):
-    return "%s_%g_U%g%s%s%s" % (model, cells, u, "" if h == 1 else "_parcels%g" % h,
-                                "" if depth == 1 else "_depth%d" % depth, "" if end == 5 else "_%gs" % end)
+def run_name(model, u, cells, h=1, depth=1, end=5, bandwidth=0):
+    return "%s_%g_U%g%s%s%s%s" % (model, cells, u, "" if h == 1 else "_parcels%g" % h,
+                                  "" if depth == 1 else "_depth%d" % depth, "" if end == 5 else "_%gs" % end,
+                                  "" if not bandwidth else "_b%gmm" % (1000*bandwidth))
 
 
 def record_name(r):
-    return run_name(r["model"], r["U"], r["cells"], r.get("parcels", 1), r.get("depth", 1), r.get("end", 5))
+    return run_name(r["model"], r["U"], r["cells"], r.get("parcels", 1), r.get("depth", 1), r.get("end", 5),
+                    r.get("bandwidth", 0))
 
 
 def describe(r):
-    return "%s, %g d%s%s%s" % (r["model"], r["cells"], "" if r.get("parcels", 1) == 1 else ", parcels h = %g" % r["parcels"],
-                               "" if r.get("depth", 1) == 1 else ", %d cells deep" % r["depth"],
-                               "" if r.get("end", 5) == 5 else ", %g s" % r["end"])
+    return "%s, %g d%s%s%s%s" % (r["model"], r["cells"], "" if r.get("parcels", 1) == 1 else ", parcels h = %g" % r["parcels"],
+                                 "" if r.get("depth", 1) == 1 else ", %d cells deep" % r["depth"],
+                                 "" if r.get("end", 5) == 5 else ", %g s" % r["end"],
+                                 "" if not r.get("bandwidth", 0) else ", bandwidth %g mm" % (1000*r["bandwidth"]))
 
 
 def packing():
@@ -94,14 +99,17 @@ def packing():
     return restart
 
 
-def run(model, u, cells, h, depth, end):
-    name = run_name(model, u, cells, h, depth, end)
+def run(model, u, cells, h, depth, end, bandwidth):
+    name = run_name(model, u, cells, h, depth, end, bandwidth)
     case = os.path.join(WORK, name)
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(TUTORIAL, case, ignore=shutil.ignore_patterns(
         "[1-9]*", "0.[0-9]*", "0", "postProcessing", "log.*", "processor*", "*.png", "*.result", "post"))
     os.makedirs(os.path.join(case, "DEM", "post"))
     shutil.copy(packing(), os.path.join(case, "DEM", "post"))
+    if bandwidth:
+        with open(os.path.join(case, "constant", "couplingProperties"), "a") as f:
+            f.write("kernelCoeffs        { bandwidth %g; }\n" % bandwidth)
     began = time.time()
     command = "./Allrun %s %g %g %g 1 %d" % (model, u, cells, end, depth)
     if h != 1:
@@ -114,7 +122,7 @@ def run(model, u, cells, h, depth, end):
         raise RuntimeError("%s failed: see %s" % (name, os.path.join(case, "log.Allrun")))
     if h != 1:
         case = os.path.join(case, "parcels_h%g" % h)
-    return name, save(name, case, dict(model=model, U=u, cells=cells, parcels=h, depth=depth, end=end, wall_s=wall,
+    return name, save(name, case, dict(model=model, U=u, cells=cells, parcels=h, depth=depth, end=end, bandwidth=bandwidth, wall_s=wall,
                                        wall_per_simulated_s=wall/end))
 
 
@@ -129,7 +137,8 @@ def refresh():
         if not os.path.isfile(os.path.join(case, "muellerBed.result")):
             continue
         sh("VFM_PROJECT_DIR=%s /usr/bin/python3 %s" % (ROOT, os.path.join(TUTORIAL, "bedProfiles.py")), case)
-        keep = {k: r[k] for k in ("model", "U", "cells", "parcels", "depth", "end", "wall_s", "wall_per_simulated_s")
+        keep = {k: r[k] for k in ("model", "U", "cells", "parcels", "depth", "end", "bandwidth", "wall_s",
+                                                "wall_per_simulated_s")
                 if k in r}
         save(record_name(r), case, keep)
         print("refreshed %s" % record_name(r), flush=True)
@@ -191,7 +200,8 @@ def table_rows(records):
         needed = " / ".join("%.0f" % r["voidfraction_%s_window_for_0.01" % h] if "voidfraction_%s_window_for_0.01" % h in r
                             else "n/a" for h in HEIGHTS)
         rows.append("| %s | %g | %g | %d | %g | %.3f | %.1f | %.3f / %.3f | %s | %s | %s | %s | %s | %.0f |" % (
-            r["model"] + ("" if r.get("end", 5) == 5 else " (%g s)" % r["end"]), r["cells"], r.get("parcels", 1), r.get("depth", 1), r["U"], r["dp_over_weight"], 1000*r["bed_height_m"],
+            r["model"] + ("" if r.get("end", 5) == 5 else " (%g s)" % r["end"])
+            + ("" if not r.get("bandwidth", 0) else " (b %g mm)" % (1000*r["bandwidth"])), r["cells"], r.get("parcels", 1), r.get("depth", 1), r["U"], r["dp_over_weight"], 1000*r["bed_height_m"],
             r["voidfraction_h16.4mm_halves"], r["voidfraction_h31.2mm_halves"], needed, cells(void, 0),
             cells(void, 1, "%+.3f"), cells(slice_, 0), cells(velocity, 0), r["wall_per_simulated_s"]))
     return rows
@@ -229,7 +239,8 @@ def ranking(records):
 
 def report():
     records = [json.load(open(p)) for p in sorted(glob.glob(os.path.join(RESULTS, "runs", "*.json")))]
-    records.sort(key=lambda r: (r["U"], r.get("parcels", 1), r.get("depth", 1), r.get("end", 5), r["cells"],
+    records.sort(key=lambda r: (r["U"], r.get("parcels", 1), r.get("depth", 1), r.get("end", 5), r.get("bandwidth", 0),
+                                r["cells"],
                                 MODELS.index(r["model"])))
     lines = ["| model | cells (d) | parcels h | depth cells | U (m/s) | dp / weight | bed height (mm) | halves differ (16.4 / 31.2 mm)"
              " | halves within 0.01 after (s) | MAD from measured (16.4 / 31.2 mm) | signed (16.4 / 31.2 mm)"
@@ -252,7 +263,7 @@ def plot(records):
         for ax, h in zip(axes, HEIGHTS):
             for r in (r for r in records if r["U"] == u):
                 p = profile(record_name(r), h)
-                style = "--" if r.get("parcels", 1) != 1 or r.get("depth", 1) != 1 else "-" if r["cells"] == 2.5 else ":"
+                style = "--" if r.get("parcels", 1) != 1 or r.get("depth", 1) != 1 or r.get("bandwidth", 0) else "-" if r["cells"] == 2.5 else ":"
                 ax.plot(1000*p[:, 0], p[:, 1], style, lw=1.2,
                         label="%s (MAD %.3f)" % (describe(r), r["mad"][HEIGHTS.index(h)] or float("nan")))
             s = measurement.published("sediFoam", "voidfraction", u, h)
@@ -303,24 +314,29 @@ def main():
     parser.add_argument("--parcels", default="")
     parser.add_argument("--depth", type=int, default=1, help="fluid cells across the depth (no-slip front and back)")
     parser.add_argument("--end", type=float, default=5.0)
+    parser.add_argument("--bandwidth", type=float, default=0.0,
+                        help="kernel only: the kernel's bandwidth in metres on every mesh")
     parser.add_argument("--redo-incomplete", action="store_true",
                         help="run again the finished runs without the particle velocity at the measured heights")
     parser.add_argument("--report", action="store_true")
     parser.add_argument("--refresh", action="store_true",
                         help="derive the finished runs still in build/ again with the current bedProfiles.py")
     args = parser.parse_args()
+    if args.bandwidth < 0 or (args.bandwidth and set(args.models.split(",")) != {"kernel"}):
+        parser.error("--bandwidth is a length in metres > 0 for --models kernel alone (got %g for %s)"
+                     % (args.bandwidth, args.models))
     os.makedirs(os.path.join(RESULTS, "runs"), exist_ok=True)
     if args.refresh:
         refresh()
     elif not args.report:
         todo = [r for r in plan(args.models.split(","), [float(u) for u in args.velocities.split(",")],
                                 [float(c) for c in args.cells.split(",") if c],
-                                [float(h) for h in args.parcels.split(",") if h], args.depth, args.end)
+                                [float(h) for h in args.parcels.split(",") if h], args.depth, args.end, args.bandwidth)
                 if to_run(run_name(*r), r[1], args.redo_incomplete)]
-        for i, (model, u, cells, h, depth, end) in enumerate(todo):
+        for i, (model, u, cells, h, depth, end, bandwidth) in enumerate(todo):
             print("[%d/%d] %s, U = %g m/s, %g s" % (i + 1, len(todo), describe(
-                dict(model=model, cells=cells, parcels=h, depth=depth)), u, end), flush=True)
-            name, record = run(model, u, cells, h, depth, end)
+                dict(model=model, cells=cells, parcels=h, depth=depth, bandwidth=bandwidth)), u, end), flush=True)
+            name, record = run(model, u, cells, h, depth, end, bandwidth)
             print("    dp / weight %.4g, bed height %.4g mm, %.4g wall s per simulated s"
                   % (record["dp_over_weight"], 1000*record["bed_height_m"], record["wall_per_simulated_s"]),
                   flush=True)

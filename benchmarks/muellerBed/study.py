@@ -263,7 +263,7 @@ def plot(records):
         for ax, h in zip(axes, HEIGHTS):
             for r in (r for r in records if r["U"] == u):
                 p = profile(record_name(r), h)
-                style = "--" if r.get("parcels", 1) != 1 or r.get("depth", 1) != 1 or r.get("bandwidth", 0) else "-" if r["cells"] == 2.5 else ":"
+                style = "--" if r.get("parcels", 1) != 1 or r.get("depth", 1) != 1 or r.get("bandwidth", 0) else {1.5: "-.", 2.5: "-"}.get(r["cells"], ":")
                 ax.plot(1000*p[:, 0], p[:, 1], style, lw=1.2,
                         label="%s (MAD %.3f)" % (describe(r), r["mad"][HEIGHTS.index(h)] or float("nan")))
             s = measurement.published("sediFoam", "voidfraction", u, h)

@@ -646,9 +646,20 @@ def test_mueller_bed():
                   "(%s, by hand %.6g)" % (result.get(key), np.mean(expected)))
     deep = copy_tutorial("muellerBed", "muellerBed-deep")
     shutil.copytree(os.path.join(case, "DEM", "post"), os.path.join(deep, "DEM", "post"))
+    edit(os.path.join(deep, "DEM", "in.parameters"), r"^(variable\s+wallFriction\s+equal\s+)\S+", r"\g<1>0.3")
+    edit(os.path.join(deep, "DEM", "in.parameters"), r"^(variable\s+wallRestitution\s+equal\s+)\S+", r"\g<1>0.9")
     rc, out = sh("./Allrun analytical 0.9 4 0.03 1 2", deep, check=False)
     check("Allrun with 2 cells across the depth completed on a 9 x 2 x 26 mesh",
           rc == 0 and "(9 x 2 x 26)" in out, "" if rc == 0 else out[-1500:])
+    # LIGGGHTS echoes the contact settings with each variable substituted, the last line the one it ran
+    screen = open(os.path.join(deep, "DEM", "log.liggghtsScreen")).read()
+    for name, wall, values in (("Friction", 0.3, "0.1 0.3 0.3 0.3"), ("Restitution", 0.9, "0.98 0.9 0.9 0.9")):
+        ran = re.findall(r"(?m)^fix \S+ all property/global coefficient%s peratomtypepair 2\s+(.*?)\s*$" % name, screen)
+        check("wall%s %g in DEM/in.parameters: LIGGGHTS ran seed-seed, seed-wall (twice), wall-wall %s"
+              % (name, wall, values), ran[-1:] == [values], "(%s)" % ran[-1:])
+    walls = re.findall(r"(?m)^fix (\w+) all wall/gran .* primitive type (\d+) [xyz]plane [-0-9.e]+\s*$", screen)
+    check("the six walls (four sides, distributor, lid) are of the walls' material, type 2",
+          sorted(w for w, t in walls if t == "2") == ["back", "front", "grid", "left", "lid", "right"], "(%s)" % walls)
     u = open(os.path.join(deep, "0", "U")).read()
     check("2 cells across the depth: front and back are no-slip for the gas",
           re.search(r'"\(front\|back\)"\s*\{\s*type\s+noSlip;', u) is not None, "")

@@ -28,16 +28,21 @@ velocity at the measured heights.
 no-slip front and back walls, named <run>_depth<N>; --end other than 5 s
 adds _<end>s to the name. --bandwidth B (kernel only) gives the kernel a
 bandwidth of B metres on every mesh instead of 0.4 of the cell size, named
-<run>_b<B in mm>mm: the mesh study at one smoothing length.
+<run>_b<B in mm>mm: the mesh study at one smoothing length. --wall-friction F
+and --wall-restitution E set the seeds' friction and restitution against the
+walls and the distributor (DEM/in.parameters; 0.1 and 0.98 by default),
+named <run>_wf<F> and <run>_we<E>.
 
 usage: study.py [--models M,..] [--velocities 0.6,0.9] [--cells 2.5,1.5,4]
-                [--parcels 1.5,2] [--depth 1] [--end 5] [--bandwidth B] [--redo-incomplete]
+                [--parcels 1.5,2] [--depth 1] [--end 5] [--bandwidth B]
+                [--wall-friction F] [--wall-restitution E] [--redo-incomplete]
                 [--report | --refresh]
 """
 import argparse
 import glob
 import json
 import os
+import re
 import shutil
 import sys
 import time
@@ -57,38 +62,56 @@ MODELS = ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion")
 MESH_MODELS = ("centroid", "analytical", "kernel")
 
 
-def plan(models, velocities, cells, parcels, depth, end, bandwidth=0):
+# The variants of the tutorial's case a run can take: record key, default,
+# scale of the value in its name, run name suffix, description, and the label
+# beside the model in the table (parcels and depth have columns of their own).
+VARIANTS = (("parcels", 1, 1, "_parcels%g", ", parcels h = %g", ""),
+            ("depth", 1, 1, "_depth%d", ", %d cells deep", ""),
+            ("end", 5, 1, "_%gs", ", %g s", " (%g s)"),
+            ("bandwidth", 0, 1000, "_b%gmm", ", bandwidth %g mm", " (b %g mm)"),
+            ("wall_friction", 0.1, 1, "_wf%g", ", wall friction %g", " (wall friction %g)"),
+            ("wall_restitution", 0.98, 1, "_we%g", ", wall restitution %g", " (wall restitution %g)"))
+DEFAULTS = {v[0]: v[1] for v in VARIANTS}
+
+
+def variant(r, key):
+    return r.get(key, DEFAULTS[key])
+
+
+def plan(models, velocities, cells, parcels, options):
+    """the runs, each a dict of model, U, cells and the variants (options: the same for all)"""
     runs = []
     for c in cells:
         for m in models:
             if c == 2.5 or m in MESH_MODELS:
-                runs += [(m, u, c, 1, depth, end, bandwidth) for u in velocities]
-    return runs + [(m, u, 2.5, h, depth, end, bandwidth) for h in parcels for m in models for u in velocities]
-
-
-def run_name(model, u, cells, h=1, depth=1, end=5, bandwidth=0):
-    return "%s_%g_U%g%s%s%s%s" % (model, cells, u, "" if h == 1 else "_parcels%g" % h,
-                                  "" if depth == 1 else "_depth%d" % depth, "" if end == 5 else "_%gs" % end,
-                                  "" if not bandwidth else "_b%gmm" % (1000*bandwidth))
+                runs += [dict(options, model=m, U=u, cells=c, parcels=1) for u in velocities]
+    return runs + [dict(options, model=m, U=u, cells=2.5, parcels=h) for h in parcels for m in models for u in velocities]
 
 
 def record_name(r):
-    return run_name(r["model"], r["U"], r["cells"], r.get("parcels", 1), r.get("depth", 1), r.get("end", 5),
-                    r.get("bandwidth", 0))
+    return "%s_%g_U%g" % (r["model"], r["cells"], r["U"]) + "".join(
+        v[3] % (v[2]*variant(r, v[0])) for v in VARIANTS if variant(r, v[0]) != v[1])
 
 
 def describe(r):
-    return "%s, %g d%s%s%s%s" % (r["model"], r["cells"], "" if r.get("parcels", 1) == 1 else ", parcels h = %g" % r["parcels"],
-                                 "" if r.get("depth", 1) == 1 else ", %d cells deep" % r["depth"],
-                                 "" if r.get("end", 5) == 5 else ", %g s" % r["end"],
-                                 "" if not r.get("bandwidth", 0) else ", bandwidth %g mm" % (1000*r["bandwidth"]))
+    return "%s, %g d" % (r["model"], r["cells"]) + "".join(
+        v[4] % (v[2]*variant(r, v[0])) for v in VARIANTS if variant(r, v[0]) != v[1])
+
+
+def table_label(r):
+    return r["model"] + "".join(v[5] % (v[2]*variant(r, v[0])) for v in VARIANTS if v[5] and variant(r, v[0]) != v[1])
 
 
 def packing():
-    """the tutorial's packed bed, made once and copied into every run"""
-    restart = os.path.join(WORK, "packing", "DEM", "post", "packed.restart")
-    if not os.path.isfile(restart):
-        case = os.path.join(WORK, "packing")
+    """the tutorial's packed bed, made once and copied into every run (again
+    when the tutorial's DEM inputs change)"""
+    case = os.path.join(WORK, "packing")
+    restart = os.path.join(case, "DEM", "post", "packed.restart")
+    inputs = ("in.packing", "in.settings", "in.parameters")
+    if not os.path.isfile(restart) or any(
+            not os.path.isfile(os.path.join(case, "DEM", f))
+            or open(os.path.join(case, "DEM", f)).read() != open(os.path.join(TUTORIAL, "DEM", f)).read()
+            for f in inputs):
         shutil.rmtree(case, ignore_errors=True)
         shutil.copytree(os.path.join(TUTORIAL, "DEM"), os.path.join(case, "DEM"))
         shutil.rmtree(os.path.join(case, "DEM", "post"), ignore_errors=True)
@@ -99,31 +122,42 @@ def packing():
     return restart
 
 
-def run(model, u, cells, h, depth, end, bandwidth):
-    name = run_name(model, u, cells, h, depth, end, bandwidth)
+def set_dem_parameter(case, name, value):
+    """variable NAME equal VALUE in the case's DEM/in.parameters"""
+    path = os.path.join(case, "DEM", "in.parameters")
+    text, n = re.subn(r"^(variable\s+%s\s+equal\s+)\S+" % name, r"\g<1>%g" % value, open(path).read(), flags=re.M)
+    if n != 1:
+        raise RuntimeError("%s: no variable %s to set" % (path, name))
+    open(path, "w").write(text)
+
+
+def run(spec):
+    name = record_name(spec)
     case = os.path.join(WORK, name)
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(TUTORIAL, case, ignore=shutil.ignore_patterns(
         "[1-9]*", "0.[0-9]*", "0", "postProcessing", "log.*", "processor*", "*.png", "*.result", "post"))
     os.makedirs(os.path.join(case, "DEM", "post"))
     shutil.copy(packing(), os.path.join(case, "DEM", "post"))
-    if bandwidth:
+    if spec["bandwidth"]:
         with open(os.path.join(case, "constant", "couplingProperties"), "a") as f:
-            f.write("kernelCoeffs        { bandwidth %g; }\n" % bandwidth)
+            f.write("kernelCoeffs        { bandwidth %g; }\n" % spec["bandwidth"])
+    set_dem_parameter(case, "wallFriction", spec["wall_friction"])
+    set_dem_parameter(case, "wallRestitution", spec["wall_restitution"])
     began = time.time()
-    command = "./Allrun %s %g %g %g 1 %d" % (model, u, cells, end, depth)
-    if h != 1:
-        command = "./Allrun parcels %g %s %g %g %g 1 %d" % (h, model, u, cells, end, depth)
+    command = "./Allrun %s %g %g %g 1 %d" % (spec["model"], spec["U"], spec["cells"], spec["end"], spec["depth"])
+    if spec["parcels"] != 1:
+        command = "./Allrun parcels %g %s %g %g %g 1 %d" % (spec["parcels"], spec["model"], spec["U"], spec["cells"],
+                                                           spec["end"], spec["depth"])
     rc, out = sh(command, case, check=False)
     wall = time.time() - began
     with open(os.path.join(case, "log.Allrun"), "w") as f:
         f.write(out)
     if rc:
         raise RuntimeError("%s failed: see %s" % (name, os.path.join(case, "log.Allrun")))
-    if h != 1:
-        case = os.path.join(case, "parcels_h%g" % h)
-    return name, save(name, case, dict(model=model, U=u, cells=cells, parcels=h, depth=depth, end=end, bandwidth=bandwidth, wall_s=wall,
-                                       wall_per_simulated_s=wall/end))
+    if spec["parcels"] != 1:
+        case = os.path.join(case, "parcels_h%g" % spec["parcels"])
+    return name, save(name, case, dict(spec, wall_s=wall, wall_per_simulated_s=wall/spec["end"]))
 
 
 def refresh():
@@ -132,13 +166,12 @@ def refresh():
     for path in sorted(glob.glob(os.path.join(RESULTS, "runs", "*.json"))):
         r = json.load(open(path))
         case = os.path.join(WORK, record_name(r))
-        if r.get("parcels", 1) != 1:
+        if variant(r, "parcels") != 1:
             case = os.path.join(case, "parcels_h%g" % r["parcels"])
         if not os.path.isfile(os.path.join(case, "muellerBed.result")):
             continue
         sh("VFM_PROJECT_DIR=%s /usr/bin/python3 %s" % (ROOT, os.path.join(TUTORIAL, "bedProfiles.py")), case)
-        keep = {k: r[k] for k in ("model", "U", "cells", "parcels", "depth", "end", "bandwidth", "wall_s",
-                                                "wall_per_simulated_s")
+        keep = {k: r[k] for k in ("model", "U", "cells", "wall_s", "wall_per_simulated_s") + tuple(DEFAULTS)
                 if k in r}
         save(record_name(r), case, keep)
         print("refreshed %s" % record_name(r), flush=True)
@@ -200,8 +233,8 @@ def table_rows(records):
         needed = " / ".join("%.0f" % r["voidfraction_%s_window_for_0.01" % h] if "voidfraction_%s_window_for_0.01" % h in r
                             else "n/a" for h in HEIGHTS)
         rows.append("| %s | %g | %g | %d | %g | %.3f | %.1f | %.3f / %.3f | %s | %s | %s | %s | %s | %.0f |" % (
-            r["model"] + ("" if r.get("end", 5) == 5 else " (%g s)" % r["end"])
-            + ("" if not r.get("bandwidth", 0) else " (b %g mm)" % (1000*r["bandwidth"])), r["cells"], r.get("parcels", 1), r.get("depth", 1), r["U"], r["dp_over_weight"], 1000*r["bed_height_m"],
+            table_label(r), r["cells"], variant(r, "parcels"), variant(r, "depth"), r["U"], r["dp_over_weight"],
+            1000*r["bed_height_m"],
             r["voidfraction_h16.4mm_halves"], r["voidfraction_h31.2mm_halves"], needed, cells(void, 0),
             cells(void, 1, "%+.3f"), cells(slice_, 0), cells(velocity, 0), r["wall_per_simulated_s"]))
     return rows
@@ -223,7 +256,7 @@ def ranking(records):
     """mean MAD over the four measured profiles, per run made at both velocities"""
     runs = {}
     for r in records:
-        if r.get("end", 5) == 5:      # the plan's runs, of one length
+        if variant(r, "end") == 5:      # the plan's runs, of one length
             runs.setdefault(describe(r), {})[r["U"]] = r["mad"]
     scored = [(np.mean(m[0.6] + m[0.9]), key, m) for key, m in runs.items()
               if set(m) == {0.6, 0.9} and None not in m[0.6] + m[0.9]]
@@ -239,9 +272,7 @@ def ranking(records):
 
 def report():
     records = [json.load(open(p)) for p in sorted(glob.glob(os.path.join(RESULTS, "runs", "*.json")))]
-    records.sort(key=lambda r: (r["U"], r.get("parcels", 1), r.get("depth", 1), r.get("end", 5), r.get("bandwidth", 0),
-                                r["cells"],
-                                MODELS.index(r["model"])))
+    records.sort(key=lambda r: (r["U"],) + tuple(variant(r, v[0]) for v in VARIANTS) + (r["cells"], MODELS.index(r["model"])))
     lines = ["| model | cells (d) | parcels h | depth cells | U (m/s) | dp / weight | bed height (mm) | halves differ (16.4 / 31.2 mm)"
              " | halves within 0.01 after (s) | MAD from measured (16.4 / 31.2 mm) | signed (16.4 / 31.2 mm)"
              " | MAD, particles in a 1.2 mm slice | v_z MAD (m/s, at each measured height)"
@@ -263,7 +294,8 @@ def plot(records):
         for ax, h in zip(axes, HEIGHTS):
             for r in (r for r in records if r["U"] == u):
                 p = profile(record_name(r), h)
-                style = "--" if r.get("parcels", 1) != 1 or r.get("depth", 1) != 1 or r.get("bandwidth", 0) else {1.5: "-.", 2.5: "-"}.get(r["cells"], ":")
+                varied = any(variant(r, v[0]) != v[1] for v in VARIANTS if v[0] != "end")
+                style = "--" if varied else {1.5: "-.", 2.5: "-"}.get(r["cells"], ":")
                 ax.plot(1000*p[:, 0], p[:, 1], style, lw=1.2,
                         label="%s (MAD %.3f)" % (describe(r), r["mad"][HEIGHTS.index(h)] or float("nan")))
             s = measurement.published("sediFoam", "voidfraction", u, h)
@@ -316,6 +348,10 @@ def main():
     parser.add_argument("--end", type=float, default=5.0)
     parser.add_argument("--bandwidth", type=float, default=0.0,
                         help="kernel only: the kernel's bandwidth in metres on every mesh")
+    parser.add_argument("--wall-friction", type=float, default=DEFAULTS["wall_friction"],
+                        help="the seeds' friction against the walls and distributor")
+    parser.add_argument("--wall-restitution", type=float, default=DEFAULTS["wall_restitution"],
+                        help="the seeds' restitution against the walls and distributor")
     parser.add_argument("--redo-incomplete", action="store_true",
                         help="run again the finished runs without the particle velocity at the measured heights")
     parser.add_argument("--report", action="store_true")
@@ -325,18 +361,22 @@ def main():
     if args.bandwidth < 0 or (args.bandwidth and set(args.models.split(",")) != {"kernel"}):
         parser.error("--bandwidth is a length in metres > 0 for --models kernel alone (got %g for %s)"
                      % (args.bandwidth, args.models))
+    if args.wall_friction < 0 or not 0 < args.wall_restitution <= 1:
+        parser.error("--wall-friction is >= 0 and --wall-restitution in (0, 1] (got %g and %g)"
+                     % (args.wall_friction, args.wall_restitution))
     os.makedirs(os.path.join(RESULTS, "runs"), exist_ok=True)
     if args.refresh:
         refresh()
     elif not args.report:
+        options = dict(depth=args.depth, end=args.end, bandwidth=args.bandwidth, wall_friction=args.wall_friction,
+                       wall_restitution=args.wall_restitution)
         todo = [r for r in plan(args.models.split(","), [float(u) for u in args.velocities.split(",")],
                                 [float(c) for c in args.cells.split(",") if c],
-                                [float(h) for h in args.parcels.split(",") if h], args.depth, args.end, args.bandwidth)
-                if to_run(run_name(*r), r[1], args.redo_incomplete)]
-        for i, (model, u, cells, h, depth, end, bandwidth) in enumerate(todo):
-            print("[%d/%d] %s, U = %g m/s, %g s" % (i + 1, len(todo), describe(
-                dict(model=model, cells=cells, parcels=h, depth=depth, bandwidth=bandwidth)), u, end), flush=True)
-            name, record = run(model, u, cells, h, depth, end, bandwidth)
+                                [float(h) for h in args.parcels.split(",") if h], options)
+                if to_run(record_name(r), r["U"], args.redo_incomplete)]
+        for i, spec in enumerate(todo):
+            print("[%d/%d] %s, U = %g m/s, %g s" % (i + 1, len(todo), describe(spec), spec["U"], spec["end"]), flush=True)
+            name, record = run(spec)
             print("    dp / weight %.4g, bed height %.4g mm, %.4g wall s per simulated s"
                   % (record["dp_over_weight"], 1000*record["bed_height_m"], record["wall_per_simulated_s"]),
                   flush=True)

@@ -17,7 +17,7 @@ from scipy.optimize import brentq
 
 import checks
 from checks import WORK, check, near
-from foamCase import ROOT, sh
+from foamCase import ROOT, set_dem, sh
 
 TUTORIALS = os.path.join(ROOT, "tutorials")
 sys.path.insert(0, TUTORIALS)
@@ -40,18 +40,6 @@ def edit(path, pattern, replacement):
         raise RuntimeError("%s: no match for %r" % (path, pattern))
     with open(path, "w") as f:
         f.write(new)
-
-
-def set_dem(case, **values):
-    """Set variables of the case's DEM/in.parameters (dimensions kept)"""
-    path = os.path.join(case, "DEM", "in.parameters")
-    text = open(path).read()
-    for name, value in values.items():
-        text, n = re.subn(r"(?m)^(variable\s+%s\s+equal\s+)\S+" % name, r"\g<1>%r" % value, text)
-        if n != 1:
-            raise RuntimeError("%s: no variable %s" % (path, name))
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def results(path):
@@ -646,8 +634,7 @@ def test_mueller_bed():
                   "(%s, by hand %.6g)" % (result.get(key), np.mean(expected)))
     deep = copy_tutorial("muellerBed", "muellerBed-deep")
     shutil.copytree(os.path.join(case, "DEM", "post"), os.path.join(deep, "DEM", "post"))
-    edit(os.path.join(deep, "DEM", "in.parameters"), r"^(variable\s+wallFriction\s+equal\s+)\S+", r"\g<1>0.3")
-    edit(os.path.join(deep, "DEM", "in.parameters"), r"^(variable\s+wallRestitution\s+equal\s+)\S+", r"\g<1>0.9")
+    set_dem(deep, wallFriction=0.3, wallRestitution=0.9)
     rc, out = sh("./Allrun analytical 0.9 4 0.03 1 2", deep, check=False)
     check("Allrun with 2 cells across the depth completed on a 9 x 2 x 26 mesh",
           rc == 0 and "(9 x 2 x 26)" in out, "" if rc == 0 else out[-1500:])

@@ -16,8 +16,7 @@ from scipy.optimize import brentq
 
 import checks
 from checks import WORK, check, near
-from foamCase import ROOT, sh
-from couplingTests import set_dem
+from foamCase import ROOT, set_dem, sh
 
 RHO, NU = 1000.0, 1e-6
 MU = RHO*NU

@@ -24,6 +24,18 @@ def sh(cmd, cwd, check=True):
     return p.returncode, p.stdout
 
 
+def set_dem(case, **values):
+    """Set variables of the case's DEM/in.parameters (dimensions kept)"""
+    path = os.path.join(case, "DEM", "in.parameters")
+    text = open(path).read()
+    for name, value in values.items():
+        text, n = re.subn(r"(?m)^(variable\s+%s\s+equal\s+)\S+" % name, r"\g<1>%r" % value, text)
+        if n != 1:
+            raise RuntimeError("%s: no variable %s" % (path, name))
+    with open(path, "w") as f:
+        f.write(text)
+
+
 def new_case(path, block_mesh=None, coupling="voidFractionModel analytical;\nalphaMin 0.05;\n"):
     """Copy the template case to path; write a blockMeshDict and run blockMesh
     when block_mesh (the dictionary body) is given."""

@@ -42,7 +42,6 @@ import argparse
 import glob
 import json
 import os
-import re
 import shutil
 import sys
 import time
@@ -55,7 +54,7 @@ TUTORIAL = os.path.join(ROOT, "tutorials", "muellerBed")
 WORK = os.path.join(ROOT, "build", "muellerBed")
 RESULTS = os.path.join(HERE, "results")
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-from foamCase import sh  # noqa: E402
+from foamCase import set_dem, sh  # noqa: E402
 import measurement  # noqa: E402
 
 MODELS = ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion")
@@ -122,15 +121,6 @@ def packing():
     return restart
 
 
-def set_dem_parameter(case, name, value):
-    """variable NAME equal VALUE in the case's DEM/in.parameters"""
-    path = os.path.join(case, "DEM", "in.parameters")
-    text, n = re.subn(r"^(variable\s+%s\s+equal\s+)\S+" % name, r"\g<1>%g" % value, open(path).read(), flags=re.M)
-    if n != 1:
-        raise RuntimeError("%s: no variable %s to set" % (path, name))
-    open(path, "w").write(text)
-
-
 def run(spec):
     name = record_name(spec)
     case = os.path.join(WORK, name)
@@ -142,8 +132,7 @@ def run(spec):
     if spec["bandwidth"]:
         with open(os.path.join(case, "constant", "couplingProperties"), "a") as f:
             f.write("kernelCoeffs        { bandwidth %g; }\n" % spec["bandwidth"])
-    set_dem_parameter(case, "wallFriction", spec["wall_friction"])
-    set_dem_parameter(case, "wallRestitution", spec["wall_restitution"])
+    set_dem(case, wallFriction=spec["wall_friction"], wallRestitution=spec["wall_restitution"])
     began = time.time()
     command = "./Allrun %s %g %g %g 1 %d" % (spec["model"], spec["U"], spec["cells"], spec["end"], spec["depth"])
     if spec["parcels"] != 1:

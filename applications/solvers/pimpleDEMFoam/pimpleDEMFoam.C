@@ -36,6 +36,7 @@ Usage
 #include "singlePhaseTransportModel.H"
 #include "pimpleControl.H"
 #include "particleFluidCoupling.H"
+#include "fluxReconstruction.H"
 #include "ddtFluxCorrection.H"
 
 int main(int argc, char *argv[])

@@ -195,6 +195,67 @@ def test_restart():
     near("position at t = 0.2, restarted / uninterrupted", rest[-1, 1]/z_full, 1.0, 1e-6)
 
 
+def binary_field(path):
+    """the internal field of a field file written with writeFormat binary"""
+    data = open(path, "rb").read()
+    at = data.index(b"internalField")
+    m = re.search(rb"nonuniform List<(\w+)>\s*(\d+)\s*\(", data[at:])
+    n, width = int(m.group(2)), {b"scalar": 1, b"vector": 3}[m.group(1)]
+    start = at + m.end()
+    return np.frombuffer(data[start:start + 8*n*width], dtype="<f8").reshape(n, width)
+
+
+def test_bed_restart():
+    print("fluidisedBed on 2 ranks stopped at a written time and continued = uninterrupted")
+    case = copy_tutorial("fluidisedBed", "bed-restart")
+    control = os.path.join(case, "system", "controlDict")
+    edit(control, r"^writeInterval\s+\S+;", "writeInterval 20;")
+    edit(control, r"^writeFormat\s+\S+;", "writeFormat binary;")
+    rc, out = sh("./Allrun analytical 3 0.004 2", case, check=False)
+    check("uninterrupted run of 40 couplings completed", rc == 0, out[-800:] if rc else "")
+    if rc:
+        return
+    full_forces = coupling_forces(os.path.join(case, "log.pimpleDEMFoam"))[20:]
+    fields = ("U", "p", "alpha", "phi")
+    full = {(r, f): binary_field(os.path.join(case, "processor%d" % r, "0.004", f))
+            for r in (0, 1) for f in fields if f != "phi"}
+    sh("rm -rf processor*/0.004 0.004", case)
+    rc, out = sh("timeout 300 mpirun -np 2 pimpleDEMFoam -parallel > log.continued 2>&1", case, check=False)
+    check("continued from t = 0.002 without a second DEM script", rc == 0, out[-800:] if rc else "")
+    if rc:
+        return
+    log = open(os.path.join(case, "log.continued")).read()
+    rest_forces = coupling_forces(os.path.join(case, "log.continued"))
+    check("20 couplings continued, numbered on from 20",
+          len(rest_forces) == 20 and re.search(r"^coupling 20: ", log, re.M) is not None,
+          "(%d)" % len(rest_forces))
+    if len(rest_forces) == len(full_forces):
+        worst = max(abs(a[1][2] - b[1][2])/abs(b[1][2]) for a, b in zip(rest_forces, full_forces))
+        near("vertical fluid force on the bed over 20 couplings, continued / uninterrupted - 1 "
+             "(8 digits logged)", worst, 0, 2e-7)
+    for f in ("U", "p", "alpha"):
+        worst = max(np.abs(binary_field(os.path.join(case, "processor%d" % r, "0.004", f)) -
+                           full[(r, f)]).max()/np.abs(full[(r, f)]).max() for r in (0, 1))
+        near("%s at t = 0.004, continued against uninterrupted (relative to its largest)" % f,
+             worst, 0, 1e-10)
+
+    print("  a time directory written incompletely is an error naming it, never a silent restart")
+    last = os.path.join(case, "0.004")
+    for damage, says in (("rm %s/DEM.forces" % last, "has no DEM.forces"),
+                         ("truncate -s 1000 %s/DEM.restart" % last, "bytes where the run wrote"),
+                         ("rm %s/DEM.restart" % last, "has no DEM.restart")):
+        sh("cp -a 0.004 saved.0.004 && " + damage, case)
+        rc, out = sh("timeout 120 mpirun -np 2 pimpleDEMFoam -parallel", case, check=False)
+        check("'%s': stops at once with '%s' and the directory" % (damage.split()[0], says),
+              rc not in (0, 124) and says in out and last in out, out[-600:] if rc in (0, 124) else "")
+        sh("rm -rf 0.004 && mv saved.0.004 0.004", case)
+    sh("cp -a 0.004 saved.0.004 && truncate -s 300 0.004/DEM.forces", case)
+    rc, out = sh("timeout 120 mpirun -np 2 pimpleDEMFoam -parallel", case, check=False)
+    check("a damaged DEM.forces stops the run, naming it", rc not in (0, 124) and "damaged" in out and
+          os.path.join(last, "DEM.forces") in out, out[-600:] if rc in (0, 124) else "")
+    sh("rm -rf 0.004 && mv saved.0.004 0.004", case)
+
+
 def test_serial_parallel():
     print("serial against mpirun -np 2 (the mesh split across the sphere's path)")
     case = copy_tutorial("settlingSphere", "settle-parallel")
@@ -715,7 +776,7 @@ def test_coupling_scale():
 
 
 def main():
-    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_restart, test_serial_parallel,
+    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_restart, test_bed_restart, test_serial_parallel,
                 test_bad_input, test_parcels, test_parcels_2d, test_packed_bed,
                 test_fluidised_bed, test_mueller_bed], sys.argv[1:])
     return checks.summary("coupling")

@@ -7,6 +7,9 @@
 #include "liggghtsCoupling.H"
 #include "OSspecific.H"
 #include "Pstream.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "ListListOps.H"
 
 #include <cstdio>
 #include <cstdlib>
@@ -71,21 +74,20 @@ void Foam::liggghtsCoupling::inDemDir(const F& f, const std::string& work) const
 Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& dict)
 :
     lmp_(nullptr),
-    ownMpi_(false)
+    ownMpi_(false),
+    setUpNextRun_(false)
 {
     // a run starting from a time the solver wrote continues the DEM from
     // the restart file written with it
-    const fileName restart(runTime.globalPath()/runTime.timeName()/"DEM.restart");
-    const bool restarting = isFile(restart);
-    const word scriptKey(restarting ? "demRestartScript" : "demScript");
-    if (restarting && !dict.found(scriptKey))
-    {
-        FatalIOErrorInFunction(dict)
-            << "the run starts from time " << runTime.timeName()
-            << " with the DEM restart file " << restart << ": set "
-            << scriptKey << " to a LIGGGHTS script that reads it with"
-            << " 'read_restart ${demRestart}'" << exit(FatalIOError);
-    }
+    const fileName restart(restartFile(runTime));
+    const bool restarting = !restart.empty();
+    // a restart runs demRestartScript where there is one, else demScript
+    // (whose 'variable demRestart index <initial state>' the command line
+    // overrides)
+    const word scriptKey
+    (
+        restarting && dict.found("demRestartScript") ? "demRestartScript" : "demScript"
+    );
     const fileName script(dict.get<fileName>(scriptKey).expand());
     const fileName path(script.isAbsolute() ? script : runTime.globalPath()/script);
     if (!isFile(path))
@@ -106,13 +108,16 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
         ownMpi_ = true;
     }
 
+    // a continued run tells the script where from (demRestart) and that it
+    // continues (demContinue 1: outputs append instead of starting anew)
     std::string args[] =
     {
         "liggghts", "-screen", screen, "-log", "none",
-        "-var", "demRestart", restarting ? restart : fileName("none")
+        "-var", "demRestart", restart, "-var", "demContinue", "1"
     };
-    char* argv[] = {&args[0][0], &args[1][0], &args[2][0], &args[3][0],
-        &args[4][0], &args[5][0], &args[6][0], &args[7][0]};
+    char* argv[11];
+    for (label i = 0; i < 11; ++i) argv[i] = &args[i][0];
+    const int argc = restarting ? 11 : 5;
     // said first: an error LIGGGHTS ends with MPI_Abort leaves no exit
     // handler a chance, and its reason is on this screen only
     Info<< "liggghtsCoupling: running " << path << " (LIGGGHTS screen output in "
@@ -124,12 +129,139 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
             // its own communicator: its messages never meet OpenFOAM's
             MPI_Comm comm;
             MPI_Comm_dup(MPI_COMM_WORLD, &comm);
-            lmp_ = new LAMMPS_NS::LAMMPS(8, argv, comm);
+            lmp_ = new LAMMPS_NS::LAMMPS(argc, argv, comm);
             lmp_->input->file(path.name().c_str());
         },
         "running " + path
     );
+    if (restarting) restoreForces(restart);
     Info<< "liggghtsCoupling: " << nParticles() << " particles" << endl;
+}
+
+
+Foam::fileName Foam::liggghtsCoupling::restartFile(const Time& runTime)
+{
+    const fileName dir(runTime.globalPath()/runTime.timeName());
+    const fileName restart(dir/"DEM.restart");
+    const fileName forces(dir/"DEM.forces");
+    // the solver wrote this time: it wrote alpha there, or the case has
+    // earlier times (a run starts from its first)
+    bool written = isFile(runTime.timePath()/"alpha") || isFile(runTime.timePath()/"alpha.gz");
+    for (const instant& t : runTime.times())
+    {
+        if (t.name() != runTime.constant() && t.value() < runTime.value()) written = true;
+    }
+    written = returnReduce(written || isFile(restart), orOp<bool>());
+    if (!written) return fileName();
+
+    string problem;
+    if (!isFile(restart) || !isFile(forces))
+    {
+        problem = "has no " + word(isFile(restart) ? "DEM.forces" : "DEM.restart");
+    }
+    else
+    {
+        IFstream is(forces, IOstream::BINARY);
+        word key;
+        scalar bytes = -1;
+        is >> key >> bytes;
+        const scalar found(fileSize(restart));
+        if (key != "restartBytes" || bytes != found)
+        {
+            problem = "has a DEM.restart of " + Foam::name(found) + " bytes where the run wrote "
+                + Foam::name(bytes);
+        }
+    }
+    if (!problem.empty())
+    {
+        FatalErrorInFunction
+            << "the run starts from time " << runTime.timeName() << ", whose directory " << dir
+            << " " << problem.c_str() << ": it was written incompletely (a run stopped"
+            << " while writing?). Remove it to continue from the time before, or set"
+            << " startFrom/startTime in system/controlDict" << exit(FatalError);
+    }
+    return restart;
+}
+
+
+void Foam::liggghtsCoupling::restoreForces(const fileName& restart)
+{
+    const fileName path(restart.path()/"DEM.forces");
+    IFstream is(path, IOstream::BINARY);
+    word key;
+    scalar bytes, step = -1;
+    labelList ids;
+    vectorField forces;
+    const bool throwing = FatalIOError.throwExceptions();
+    try
+    {
+        is >> key >> bytes >> key >> step >> ids >> forces;
+    }
+    catch (const Foam::IOerror&)
+    {
+        ids.clear();
+    }
+    FatalIOError.throwExceptions(throwing);
+    if (is.bad() || ids.size() != nParticles() || forces.size() != ids.size())
+    {
+        FatalErrorInFunction
+            << path << " holds " << ids.size() << " ids and " << forces.size()
+            << " forces for the " << nParticles() << " particles of " << restart
+            << ": it is damaged; remove " << restart.path()
+            << " to continue from the time before" << exit(FatalError);
+    }
+    if (step != scalar(lmp_->update->ntimestep))
+    {
+        FatalErrorInFunction
+            << "the DEM script " << demDir_ << " did not continue from " << restart
+            << " (the DEM is at step " << label(lmp_->update->ntimestep) << ", the file at "
+            << step << "): read it with 'read_restart ${demRestart}' (the initial state"
+            << " given by 'variable demRestart index <file>' before it), or name a"
+            << " script that does in demRestartScript" << exit(FatalError);
+    }
+    setForces(ids, forces);
+    setUpNextRun_ = true;
+}
+
+
+void Foam::liggghtsCoupling::writeRestart(const fileName& dir)
+{
+    if (Pstream::master()) mkDir(dir);
+    command("write_restart " + (dir/"DEM.restart"));
+
+    // the fluid force the DEM applies until the next coupling, by id
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    double** f = forceArray();
+    const label me = Pstream::myProcNo();
+    List<labelList> ids(Pstream::nProcs());
+    List<vectorField> forces(Pstream::nProcs());
+    ids[me].setSize(atom.nlocal);
+    forces[me].setSize(atom.nlocal);
+    for (label i = 0; i < atom.nlocal; ++i)
+    {
+        ids[me][i] = label(atom.tag[i]);
+        forces[me][i] = vector(f[i][0], f[i][1], f[i][2]);
+    }
+    // a restart sets LIGGGHTS up (neighbour lists, contact histories)
+    // before its first step, which a run going on does not: the next run
+    // from here is set up alike, so that the two continue identically
+    setUpNextRun_ = true;
+    Pstream::gatherList(ids);
+    Pstream::gatherList(forces);
+    if (!Pstream::master()) return;
+
+    // written last and renamed when complete: its presence says the
+    // directory is whole
+    const fileName tmpPath(dir/"DEM.forces.tmp");
+    {
+        OFstream os(tmpPath, IOstream::BINARY);
+        os.precision(17);
+        os  << word("restartBytes") << token::SPACE << scalar(fileSize(dir/"DEM.restart")) << nl
+            << word("demStep") << token::SPACE << scalar(lmp_->update->ntimestep) << nl
+            << ListListOps::combine<labelList>(ids, accessOp<labelList>()) << nl
+            << ListListOps::combine<vectorField>(forces, accessOp<vectorField>()) << nl;
+    }
+    mv(tmpPath, dir/"DEM.forces");
 }
 
 
@@ -149,7 +281,8 @@ void Foam::liggghtsCoupling::command(const string& line)
 
 void Foam::liggghtsCoupling::run(const label nSteps)
 {
-    command("run " + Foam::name(nSteps) + " pre no post no");
+    command("run " + Foam::name(nSteps) + (setUpNextRun_ ? " pre yes" : " pre no") + " post no");
+    setUpNextRun_ = false;
 }
 
 
@@ -247,11 +380,7 @@ Foam::label Foam::liggghtsCoupling::dimension() const
 }
 
 
-void Foam::liggghtsCoupling::setForces
-(
-    const labelList& ids,
-    const vectorField& forces
-)
+double** Foam::liggghtsCoupling::forceArray() const
 {
     LAMMPS_NS::Fix* fix = lmp_->modify->find_fix_property
     (
@@ -265,7 +394,17 @@ void Foam::liggghtsCoupling::setForces
             << " map array'): the fluid forces cannot reach the particles"
             << exit(FatalError);
     }
-    double** f = static_cast<LAMMPS_NS::FixPropertyAtom*>(fix)->array_atom;
+    return static_cast<LAMMPS_NS::FixPropertyAtom*>(fix)->array_atom;
+}
+
+
+void Foam::liggghtsCoupling::setForces
+(
+    const labelList& ids,
+    const vectorField& forces
+)
+{
+    double** f = forceArray();
     LAMMPS_NS::Atom& atom = *lmp_->atom;
     // the forces of the atoms as particles() listed them (no DEM step
     // since): no id lookup

@@ -268,6 +268,8 @@ void Foam::particleFluidCoupling::readTimeSteps()
             << " whole multiple or divisor of the fluid step " << dtFluid
             << " s (controlDict deltaT)" << exit(FatalIOError);
     }
+    // a continued run goes on counting from its start time
+    nCouplings_ = label(round(runTime.value()/(demStepsPerCoupling_*dem_->timeStep())));
     Info<< "particleFluidCoupling: " << demStepsPerCoupling_ << " DEM steps and "
         << fluidStepsPerCoupling_ << " fluid steps per coupling" << endl;
 }
@@ -605,8 +607,7 @@ void Foam::particleFluidCoupling::write()
     const fileName dir(runTime.globalPath()/runTime.timeName());
     // in parallel the time directories are the processors'; LIGGGHTS writes
     // one file from the master
-    if (Pstream::master()) mkDir(dir);
-    dem_->command("write_restart " + (dir/"DEM.restart"));
+    dem_->writeRestart(dir);
     const particleData all(particlesOnMaster());
     if (!Pstream::master()) return;
 

@@ -94,6 +94,11 @@ def run(tests, only):
     """Run the test functions (those named in only, when given); a test that
     raises counts as failed."""
     os.makedirs(WORK, exist_ok=True)
+    unknown = sorted(set(only) - {t.__name__ for t in tests})
+    if unknown:
+        check("test names given exist (%s)" % ", ".join(unknown), False,
+              "valid: " + " ".join(t.__name__ for t in tests))
+        return
     for t in tests:
         if only and t.__name__ not in only:
             continue

@@ -141,6 +141,11 @@ def test_mesh(name, case, spheres, block):
 def main():
     only = set(sys.argv[1:])
     os.makedirs(WORK, exist_ok=True)
+    meshes = ("tetrahedral", "cartesian", "polyhedral")
+    if only - set(meshes):
+        checks.check("mesh names given exist (%s)" % ", ".join(sorted(only - set(meshes))), False,
+                     "valid: " + " ".join(meshes))
+        return checks.summary("decomposition")
     L = 0.03
     lo, hi = (0, 0, 0), (L, L, L)
 

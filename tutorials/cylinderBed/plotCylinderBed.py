@@ -4,7 +4,6 @@
 time beside the bed weight per area of the mesh's inlet, and side views of
 the beads; prints the time-averaged pressure drop after the start-up
 (t > 0.3 s) and writes cylinderBed.png and cylinderBed.result."""
-import glob
 import os
 import re
 import sys
@@ -14,49 +13,35 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.environ.get("VFM_PROJECT_DIR",
-                                               os.path.join(os.path.dirname(os.path.abspath(__file__)), "../..")),
-                                "tutorials"))
-import caseProperties  # noqa: E402
-import particleVtk  # noqa: E402
+# the fluidisedBed tutorial's readers, also from a copy of the case elsewhere
+PROJECT = os.environ.get("VFM_PROJECT_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
+sys.path[:0] = [os.path.join(PROJECT, "tutorials"), os.path.join(PROJECT, "tutorials", "fluidisedBed")]
+from bedData import bed_weight, inlet_area, pressure_drop, pressure_panel, read_vtk, snapshots  # noqa: E402
 
 START_UP = 0.3
-data_file = os.path.join("postProcessing", "inletPressure", "0", "surfaceFieldValue.dat")
-area = float(re.search(r"^# Area\s*:\s*(\S+)", open(data_file).read(), re.M).group(1))
-_, rho_f, _ = caseProperties.fluid()
-rho_p, g = caseProperties.particle_density(), caseProperties.gravity()
-r = caseProperties.particle_diameter()/2
-log = open("log.pimpleDEMFoam").read()
-n = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", log).group(1))
-weight = n*4/3*np.pi*r**3*(rho_p - rho_f)*g/area
-data = np.loadtxt(data_file)
-t, dp = data[:, 0], rho_f*data[:, 1]
+weight = bed_weight(".", inlet_area("."))
+t, dp = pressure_drop(".")
 settled = t > START_UP
 if not settled.any():
     raise SystemExit(f"plotCylinderBed: the run ends before t = {START_UP} s: no average")
 mean = dp[settled].mean()
 model = re.search(r"^voidFractionModel\s+(\w+);", open("constant/couplingProperties").read(), re.M).group(1)
+n = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles",
+                  open("log.pimpleDEMFoam").read()).group(1))
 print(f"{model}: time-averaged pressure drop (t > {START_UP} s) {mean:.1f} Pa, bed weight per inlet area "
       f"{weight:.1f} Pa ({100*(mean/weight - 1):+.1f} %)")
 with open("cylinderBed.result", "w") as f:
     f.write(f"dp_error {abs(mean/weight - 1)}\nweight_per_area {weight}\nmean_dp {mean}\n")
 
-files = sorted(glob.glob(os.path.join("VTK", "particles_*.vtk")),
-               key=lambda p: int(re.findall(r"_(\d+)\.vtk", p)[0]))[-3:]
+files = snapshots(".")[-3:]
 fig = plt.figure(figsize=(10, 4.6))
 ax = fig.add_subplot(1, len(files) + 2, (1, 2))
-ax.plot(t, dp, lw=0.8, label="pimpleDEMFoam + LIGGGHTS")
-ax.axhline(weight, color="k", ls="--", lw=1, label="bed weight / inlet area")
-ax.axhline(mean, color="C1", ls=":", lw=1, label=f"mean t > {START_UP} s ({100*(mean/weight - 1):+.1f} %)")
-ax.set_xlabel("t [s]")
-ax.set_ylabel("pressure drop [Pa]")
-ax.set_ylim(0, 2*weight)
-ax.legend(fontsize=7)
+pressure_panel(ax, t, dp, weight, mean, START_UP, per="inlet area")
 ax.set_title(f"{model}: {n:,} beads, 30 mm column (O-grid)", fontsize=9)
 dt = float(re.search(r"^deltaT\s+(\S+);", open("system/controlDict").read(), re.M).group(1))
 points = None
 for k, path in enumerate(files):
-    x, _, v = particleVtk.read(path)
+    x, _, v = read_vtk(path)
     a = fig.add_subplot(1, len(files) + 2, k + 3)
     # the beads of the central slab |y| < 3 mm, seen from the side
     slab = np.abs(x[:, 1]) < 3e-3
@@ -67,10 +52,9 @@ for k, path in enumerate(files):
     a.set_aspect("equal")
     a.set_xticks([-15, 0, 15])
     a.set_yticks([] if k else [0, 20, 40, 60])
-    if not k:
-        a.set_ylabel("z [mm]")
     step = int(re.findall(r"_(\d+)\.vtk", path)[0])
-    a.set_title(f"t = {step*dt:.2f} s\n|y| < 3 mm", fontsize=8)
+    a.set_title(f"t = {step*dt:.2f} s\n|y| < 3 mm" + ("\nz [mm]" if not k else ""), fontsize=8)
+fig.subplots_adjust(wspace=0.35)
 if points is not None:
     fig.colorbar(points, ax=fig.axes[1:], shrink=0.8, label="bead vertical velocity [m/s]")
 fig.savefig("cylinderBed.png", dpi=120)

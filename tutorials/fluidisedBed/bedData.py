@@ -29,19 +29,43 @@ def snapshots(case):
     return sorted(files, key=lambda f: int(re.findall(r"_(\d+)\.vtk", f)[0]))
 
 
-def bed_weight(case):
+def _inlet_data(case):
+    return os.path.join(case, "postProcessing", "inletPressure", "0", "surfaceFieldValue.dat")
+
+
+def inlet_area(case):
+    """the mesh's inlet area, as the surfaceFieldValue file's header gives it"""
+    return float(re.search(r"^# Area\s*:\s*(\S+)", open(_inlet_data(case)).read(), re.M).group(1))
+
+
+def bed_weight(case, area=None):
     """from the particle count the solver reports at start and the beads'
-    (or parcels') radius in the case's DEM parameters"""
+    (or parcels') radius in the case's DEM parameters, per area (default:
+    the box's width x depth from the DEM parameters)"""
     text = open(os.path.join(case, "log.pimpleDEMFoam")).read()
     n = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", text).group(1))
     r = caseProperties.particle_diameter(case)/2
-    box = caseProperties.dem_parameters(case)
-    return n*4/3*np.pi*r**3*(RHO_P - RHO_F)*G/(box["width"]*box["depth"])
+    if area is None:
+        box = caseProperties.dem_parameters(case)
+        area = box["width"]*box["depth"]
+    return n*4/3*np.pi*r**3*(RHO_P - RHO_F)*G/area
 
 
 def pressure_drop(case):
-    data = np.loadtxt(os.path.join(case, "postProcessing", "inletPressure", "0", "surfaceFieldValue.dat"))
+    data = np.loadtxt(_inlet_data(case))
     return data[:, 0], RHO_F*data[:, 1]
+
+
+def pressure_panel(ax, t, dp, weight, mean, start, per="area"):
+    """the pressure drop against time beside the bed weight per area and the
+    mean after the start-up"""
+    ax.plot(t, dp, lw=0.8, label="pimpleDEMFoam + LIGGGHTS")
+    ax.axhline(weight, color="k", ls="--", lw=1, label=f"bed weight / {per}")
+    ax.axhline(mean, color="C1", ls=":", lw=1, label=f"mean t > {start} s ({100*(mean/weight - 1):+.1f} %)")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("pressure drop [Pa]")
+    ax.set_ylim(0, 2*weight)
+    ax.legend(fontsize=7)
 
 
 def log_extremes(case):

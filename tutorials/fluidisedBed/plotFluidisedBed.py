@@ -10,7 +10,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from bedData import bed_weight, pressure_drop, read_vtk, snapshots
+from bedData import bed_weight, pressure_drop, pressure_panel, read_vtk, snapshots
 
 weight = bed_weight(".")
 t, dp = pressure_drop(".")
@@ -26,13 +26,7 @@ with open("fluidisedBed.result", "w") as f:
 files = snapshots(".")[-4:]   # none in a run shorter than a write interval
 fig = plt.figure(figsize=(10, 4.6))
 ax = fig.add_subplot(1, len(files) + 2, (1, 2))
-ax.plot(t, dp, lw=0.8, label="pimpleDEMFoam + LIGGGHTS")
-ax.axhline(weight, color="k", ls="--", lw=1, label="bed weight / area")
-ax.axhline(mean, color="C1", ls=":", lw=1, label=f"mean t > 0.4 s ({100*(mean/weight - 1):+.1f} %)")
-ax.set_xlabel("t [s]")
-ax.set_ylabel("pressure drop [Pa]")
-ax.set_ylim(0, 2*weight)
-ax.legend(fontsize=7)
+pressure_panel(ax, t, dp, weight, mean, 0.4)
 couplingText = open("constant/couplingProperties").read()
 n = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", open("log.pimpleDEMFoam").read()).group(1))
 parcels = re.search(r"coarseGraining\s*\{\s*factor\s+([0-9.]+);", couplingText)

@@ -41,7 +41,12 @@ if [ ! -f "$src/.unpacked" ]; then
     touch "$src/.unpacked"
 fi
 
-if [ ! -f "$src/.prepared" ]; then
+# the lnInclude folders the project's builds need; a list that grows is
+# prepared again
+libs="OpenFOAM OSspecific/POSIX finiteVolume meshTools fileFormats surfMesh Pstream/mpi lagrangian/basic
+      dynamicMesh parallel/decompose/decompositionMethods TurbulenceModels/turbulenceModels
+      TurbulenceModels/incompressible TurbulenceModels/phaseIncompressible"
+if [ ! -f "$src/.prepared" ] || [ "$(cat "$src/.prepared")" != "$(echo $libs)" ]; then
     say "building wmake helpers and lnInclude folders"
     (
         set +eu
@@ -51,11 +56,10 @@ if [ ! -f "$src/.prepared" ]; then
         set -e
         cd "$src/wmake/src" && ./Allmake >/dev/null
         cd "$src/src"
-        for lib in OpenFOAM OSspecific/POSIX finiteVolume meshTools fileFormats surfMesh \
-                   Pstream/mpi lagrangian/basic dynamicMesh parallel/decompose/decompositionMethods; do
+        for lib in $libs; do
             wmakeLnInclude -u "$lib" >/dev/null
         done
     )
-    touch "$src/.prepared"
+    echo $libs > "$src/.prepared"
 fi
 say "ready: OpenFOAM source at $src"

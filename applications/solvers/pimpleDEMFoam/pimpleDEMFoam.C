@@ -12,8 +12,9 @@ Group
     grpLagrangianSolvers
 
 Description
-    Unresolved CFD-DEM solver: incompressible, laminar, volume-averaged
-    Navier-Stokes equations (PIMPLE) for the fluid on a mesh coarser than
+    Unresolved CFD-DEM solver: incompressible, volume-averaged
+    Navier-Stokes equations (PIMPLE), laminar or with the fluid-fraction
+    weighted turbulence models of DPMFoam (constant/turbulenceProperties) for the fluid on a mesh coarser than
     the particles, LIGGGHTS running in-process for the particles, coupled
     through a run-time selectable voidFractionModel and dragModel
     (particleFluidCoupling). Formulation A (set I) or B (set II); the drag
@@ -34,6 +35,7 @@ Usage
 
 #include "fvCFD.H"
 #include "singlePhaseTransportModel.H"
+#include "PhaseIncompressibleTurbulenceModel.H"
 #include "pimpleControl.H"
 #include "particleFluidCoupling.H"
 #include "fluxReconstruction.H"
@@ -74,6 +76,10 @@ int main(int argc, char *argv[])
             while (pimple.correct())
             {
                 #include "pEqn.H"
+            }
+            if (turbulence.valid() && pimple.turbCorr())
+            {
+                turbulence->correct();
             }
         }
 

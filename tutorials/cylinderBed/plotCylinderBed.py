@@ -23,7 +23,10 @@ weight = bed_weight(".", inlet_area("."))
 t, dp = pressure_drop(".")
 settled = t > START_UP
 if not settled.any():
-    raise SystemExit(f"plotCylinderBed: the run ends before t = {START_UP} s: no average")
+    print(f"plotCylinderBed: the run ends before t = {START_UP} s: no average, no plot")
+    if os.path.exists("cylinderBed.result"):
+        os.remove("cylinderBed.result")
+    sys.exit(0)
 mean = dp[settled].mean()
 model = re.search(r"^voidFractionModel\s+(\w+);", open("constant/couplingProperties").read(), re.M).group(1)
 n = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles",

@@ -214,7 +214,8 @@ def couple(case, ranks, couplings, model, report_exchange=False, write_at_end=Fa
     solver = "%s -c \"%s\" pimpleDEMFoam" % (sys.executable, RSS_WRAPPER)
     if ranks > 1:
         sh("decomposePar -force", case, "log.decomposePar")
-        sh("mpirun -np %d %s -parallel" % (ranks, solver), case, "log.pimpleDEMFoam")
+        # the exchange counts run more ranks than cores (not timed)
+        sh("mpirun --oversubscribe -np %d %s -parallel" % (ranks, solver), case, "log.pimpleDEMFoam")
     else:
         sh(solver, case, "log.pimpleDEMFoam")
     return os.path.join(case, "log.pimpleDEMFoam")

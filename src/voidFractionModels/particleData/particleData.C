@@ -6,7 +6,6 @@
 \*---------------------------------------------------------------------------*/
 #include "particleData.H"
 #include "liggghtsDumpReader.H"
-#include "mathematicalConstants.H"
 #include "error.H"
 #include "UIndirectList.H"
 
@@ -67,17 +66,6 @@ Foam::particleData Foam::particleData::reordered(const labelUList& order) const
     if (velocities_.size()) result.setVelocities(vectorField(velocities_, order));
     if (types_.size()) result.setTypes(labelList(UIndirectList<label>(types_, order)));
     return result;
-}
-
-
-Foam::scalar Foam::particleData::totalVolume() const
-{
-    scalar v = 0;
-    forAll(radii_, i)
-    {
-        v += 4.0/3.0*constant::mathematical::pi*pow3(radii_[i]);
-    }
-    return v;
 }
 
 

@@ -8,7 +8,7 @@ import glob
 import os
 import re
 
-NUMBER = r"([-+0-9.eE]+)"
+NUMBER = r"([-+]?[0-9.][-+0-9.eE]*)"
 
 
 def _entry(path, key):

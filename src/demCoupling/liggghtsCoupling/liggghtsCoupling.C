@@ -10,6 +10,7 @@
 #include "IFstream.H"
 #include "OFstream.H"
 #include "ListListOps.H"
+#include "mathematicalConstants.H"
 
 #include <cstdio>
 #include <cstdlib>
@@ -75,11 +76,12 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
 :
     lmp_(nullptr),
     ownMpi_(false),
-    setUpNextRun_(false)
+    setUpNextRun_(false),
+    restart_(restartFile(runTime))
 {
     // a run starting from a time the solver wrote continues the DEM from
     // the restart file written with it
-    const fileName restart(restartFile(runTime));
+    const fileName& restart = restart_;
     const bool restarting = !restart.empty();
     // a restart runs demRestartScript where there is one, else demScript
     // (whose 'variable demRestart index <initial state>' the command line
@@ -235,12 +237,23 @@ void Foam::liggghtsCoupling::writeRestart(const fileName& dir)
     const label me = Pstream::myProcNo();
     List<labelList> ids(Pstream::nProcs());
     List<vectorField> forces(Pstream::nProcs());
+    // and the velocities kept for the accelerations, with their flags
+    double** previous = previousVelocityArray();
+    List<vectorField> previousV(Pstream::nProcs());
+    List<scalarField> previousSet(Pstream::nProcs());
     ids[me].setSize(atom.nlocal);
     forces[me].setSize(atom.nlocal);
+    previousV[me].setSize(previous ? atom.nlocal : 0);
+    previousSet[me].setSize(previous ? atom.nlocal : 0);
     for (label i = 0; i < atom.nlocal; ++i)
     {
         ids[me][i] = label(atom.tag[i]);
         forces[me][i] = vector(f[i][0], f[i][1], f[i][2]);
+        if (previous)
+        {
+            previousV[me][i] = vector(previous[i][0], previous[i][1], previous[i][2]);
+            previousSet[me][i] = previous[i][3];
+        }
     }
     // a restart sets LIGGGHTS up (neighbour lists, contact histories)
     // before its first step, which a run going on does not: the next run
@@ -248,6 +261,8 @@ void Foam::liggghtsCoupling::writeRestart(const fileName& dir)
     setUpNextRun_ = true;
     Pstream::gatherList(ids);
     Pstream::gatherList(forces);
+    Pstream::gatherList(previousV);
+    Pstream::gatherList(previousSet);
     if (!Pstream::master()) return;
 
     // written last and renamed when complete: its presence says the
@@ -260,6 +275,11 @@ void Foam::liggghtsCoupling::writeRestart(const fileName& dir)
             << word("demStep") << token::SPACE << scalar(lmp_->update->ntimestep) << nl
             << ListListOps::combine<labelList>(ids, accessOp<labelList>()) << nl
             << ListListOps::combine<vectorField>(forces, accessOp<vectorField>()) << nl;
+        if (previous)
+        {
+            os  << ListListOps::combine<vectorField>(previousV, accessOp<vectorField>()) << nl
+                << ListListOps::combine<scalarField>(previousSet, accessOp<scalarField>()) << nl;
+        }
     }
     mv(tmpPath, dir/"DEM.forces");
 }
@@ -312,6 +332,16 @@ Foam::labelList Foam::liggghtsCoupling::idOrder() const
 }
 
 
+Foam::label Foam::liggghtsCoupling::ownedAtom(const label id) const
+{
+    LAMMPS_NS::Atom& atom = *lmp_->atom;
+    if (id < 1 || id > atom.map_tag_max) return -1;
+    // map() also knows ghost atoms: only the owner's copy counts
+    const label i = atom.map(id);
+    return (i < atom.nlocal) ? i : -1;
+}
+
+
 Foam::particleData Foam::liggghtsCoupling::particles(const bool inIdOrder) const
 {
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
@@ -353,6 +383,116 @@ Foam::particleData Foam::liggghtsCoupling::particles(const bool inIdOrder) const
     result.setVelocities(vectorField(std::move(v)));
     result.setTypes(std::move(type));
     return result;
+}
+
+
+double** Foam::liggghtsCoupling::previousVelocityArray() const
+{
+    LAMMPS_NS::Fix* fix = lmp_->modify->find_fix_property
+    (
+        "vfmPreviousVelocity", "property/atom", "vector", 0, 0, "pimpleDEMFoam", false
+    );
+    return fix ? static_cast<LAMMPS_NS::FixPropertyAtom*>(fix)->array_atom : nullptr;
+}
+
+
+void Foam::liggghtsCoupling::trackAccelerations()
+{
+    if (previousVelocityArray()) return;
+    command
+    (
+        "fix vfmPreviousVelocity all property/atom vfmPreviousVelocity"
+        " vector no no no 0 0 0 0"
+    );
+    if (restart_.empty()) return;
+
+    // a continued run: the velocities written with DEM.forces (LIGGGHTS
+    // drops a restart file's per-atom data at the script's first run)
+    const fileName path(restart_.path()/"DEM.forces");
+    IFstream is(path, IOstream::BINARY);
+    word key;
+    scalar bytes, step;
+    labelList ids;
+    vectorField forces, previousV;
+    scalarField previousSet;
+    const bool throwing = FatalIOError.throwExceptions();
+    try
+    {
+        is >> key >> bytes >> key >> step >> ids >> forces >> previousV >> previousSet;
+    }
+    catch (const Foam::IOerror&)
+    {
+        previousV.clear();
+    }
+    FatalIOError.throwExceptions(throwing);
+    if (previousV.size() != ids.size() || previousSet.size() != ids.size())
+    {
+        WarningInFunction
+            << path << " holds no particle velocities (written without"
+            << " virtualMass): the first interval takes the particles as"
+            << " not accelerating" << endl;
+        return;
+    }
+    // LIGGGHTS sets a new fix's values to their defaults at its first
+    // run: they go in after it (meanAccelerations)
+    restoredIds_.transfer(ids);
+    restoredVelocities_.transfer(previousV);
+    restoredFlags_.transfer(previousSet);
+}
+
+
+Foam::vectorField Foam::liggghtsCoupling::meanAccelerations
+(
+    const scalar interval,
+    const bool inIdOrder
+)
+{
+    double** previous = previousVelocityArray();
+    if (!previous)
+    {
+        FatalErrorInFunction
+            << "trackAccelerations() was not called" << abort(FatalError);
+    }
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    forAll(restoredIds_, k)
+    {
+        const label i = ownedAtom(restoredIds_[k]);
+        if (i < 0) continue;
+        for (direction d = 0; d < 3; ++d) previous[i][d] = restoredVelocities_[k][d];
+        previous[i][3] = restoredFlags_[k];
+    }
+    restoredIds_.clear();
+    const label n = atom.nlocal;
+    const labelList order(inIdOrder ? idOrder() : labelList());
+    vectorField a(n, Zero);
+    for (label k = 0; k < n; ++k)
+    {
+        const label i = inIdOrder ? order[k] : k;
+        double* p = previous[i];
+        const vector v(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
+        if (p[3] > 0.5) a[k] = (v - vector(p[0], p[1], p[2]))/interval;
+        p[0] = v.x();
+        p[1] = v.y();
+        p[2] = v.z();
+        p[3] = 1;
+    }
+    return a;
+}
+
+
+Foam::scalar Foam::liggghtsCoupling::lightestDensity() const
+{
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    const bool disks = (dimension() == 2);
+    scalar lightest = GREAT;
+    for (label i = 0; i < atom.nlocal; ++i)
+    {
+        const scalar r = atom.radius[i];
+        const scalar size = disks ? constant::mathematical::pi*r*r
+                                  : 4.0/3.0*constant::mathematical::pi*r*r*r;
+        lightest = min(lightest, atom.rmass[i]/size);
+    }
+    return returnReduce(lightest, minOp<scalar>());
 }
 
 
@@ -429,10 +569,8 @@ void Foam::liggghtsCoupling::setForces
     }
     forAll(ids, k)
     {
-        // map() also knows ghost atoms: only the owner's copy gets the force
-        if (ids[k] < 1 || ids[k] > atom.map_tag_max) continue;
-        const int i = atom.map(ids[k]);
-        if (i < 0 || i >= atom.nlocal) continue;
+        const label i = ownedAtom(ids[k]);
+        if (i < 0) continue;
         f[i][0] = forces[k].x();
         f[i][1] = forces[k].y();
         f[i][2] = forces[k].z();

@@ -83,6 +83,7 @@ Foam::particleFluidCoupling::particleFluidCoupling
     buoyancy_(false),
     removeOutside_(false),
     parcels_(dict_, dict_.getOrDefault<bool>("twoDimensional", false)),
+    liftAndVirtualMass_(mesh, dict_, dict_.getOrDefault<wordList>("forces", wordList())),
     demForceScale_(1),
     demStepsPerCoupling_(0),
     fluidStepsPerCoupling_(1),
@@ -116,9 +117,9 @@ Foam::particleFluidCoupling::particleFluidCoupling
         dimensionedScalar("zero", inv(dimTime), 0.0),
         zeroGradientFvPatchScalarField::typeName
     ),
-    dragSource_
+    explicitSource_
     (
-        IOobject("dragSource", mesh.time().timeName(), mesh),
+        IOobject("explicitSource", mesh.time().timeName(), mesh),
         mesh,
         dimensionedVector("zero", dimAcceleration, Zero),
         zeroGradientFvPatchVectorField::typeName
@@ -140,6 +141,7 @@ Foam::particleFluidCoupling::particleFluidCoupling
     voidFraction_ = voidFractionModel::New(dict_, mesh);
     distributor_.reset(new particleDistributor(voidFraction_()));
     dem_.reset(new liggghtsCoupling(mesh.time(), dict_));
+    if (liftAndVirtualMass_.virtualMass()) dem_->trackAccelerations();
     checkDimensions();
     readTimeSteps();
 
@@ -160,11 +162,12 @@ void Foam::particleFluidCoupling::readForces()
     {
         if (f == "pressureGradient") pressureGradientForce_ = true;
         else if (f == "buoyancy") buoyancy_ = true;
-        else
+        else if (!liftAndVirtualMass::handles(f))
         {
             FatalIOErrorInFunction(dict_)
                 << "unknown entry " << f << " in forces; valid: "
-                << "(pressureGradient buoyancy)" << exit(FatalIOError);
+                << "(pressureGradient buoyancy SaffmanMeiLift virtualMass)"
+                << exit(FatalIOError);
         }
     }
     if (pressureGradientForce_ && formulation_ == formulation::B)
@@ -422,11 +425,24 @@ void Foam::particleFluidCoupling::beginStep
                 bv = beta*v[i];
             }
         );
+        if (liftAndVirtualMass_.virtualMass())
+        {
+            // in the order mapParticles read the particles in
+            const scalar interval = demStepsPerCoupling_*dem_->timeStep();
+            accelerations_ = dem_->meanAccelerations(interval, !Pstream::parRun());
+            voidFraction_->holders().toHeld(accelerations_);
+        }
+        if (liftAndVirtualMass_.active())
+        {
+            vectorField cellForce;
+            addLiftAndVirtualMass(U, nu, cellForce);
+            cellBetaV -= cellForce;
+        }
         const scalarField& V = mesh_.V();
         // the equations read the cell values only: the boundaries (and
         // their processor exchange) wait for a write time, see endStep
         Ksl_.primitiveFieldRef() = cellBeta/(rho_*V);
-        dragSource_.primitiveFieldRef() = cellBetaV/(rho_*V);
+        explicitSource_.primitiveFieldRef() = cellBetaV/(rho_*V);
         forceSum_ = vectorField(n, Zero);
         timeForces_ += clock_.timeIncrement();
     }
@@ -437,6 +453,67 @@ void Foam::particleFluidCoupling::beginStep
         (1 - f)*alphaStart_ + f*voidFraction_->voidFraction().primitiveField();
     alpha_.correctBoundaryConditions();
     clock_.timeIncrement();
+}
+
+
+void Foam::particleFluidCoupling::addLiftAndVirtualMass
+(
+    const volVectorField& U,
+    const scalar nu,
+    vectorField& cellForce
+)
+{
+    const scalar interval = demStepsPerCoupling_*dem_->timeStep();
+    if (liftAndVirtualMass_.virtualMass())
+    {
+        // the added mass lags one interval: stable while lighter than
+        // the particle
+        const scalar lightest = dem_->lightestDensity();
+        const scalar ratio =
+            liftAndVirtualMass_.Cvm()*rho_*parcels_.volumeForceFactor(1)/lightest;
+        if (ratio >= 1)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "virtualMass: Cvm rho/rho_p = " << ratio << " for the lightest"
+                << " particles (" << lightest << " kg/m^3); the added mass is"
+                << " explicit and needs it below 1" << exit(FatalIOError);
+        }
+    }
+    vectorField vorticity, DUDt;
+    liftAndVirtualMass_.cellFields(U, interval, vorticity, DUDt);
+    vectorField Up, vorticityP, DUDtP;
+    voidFraction_->gather(U.primitiveField(), Up, vorticity, vorticityP);
+    voidFraction_->gather(DUDt, DUDtP);
+
+    const label n = particles_.size();
+    const scalarField& volumes = voidFraction_->particleVolumes();
+    const vectorField& v = particles_.velocities();
+    vectorField& F = liftAndVirtualMassForce_;
+    F.setSize(n);
+    // the force on each particle, and per unit of its weights what the
+    // fluid loses, so that the cells lose the force itself
+    vectorField perWeight(n, Zero);
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar s = weightSum_[i];
+        if (s <= SMALL)
+        {
+            F[i] = Zero;
+            continue;
+        }
+        const label type = particles_.type(i);
+        const scalar d = parcels_.particleDiameter(2*particles_.radii()[i], type);
+        const vector a(accelerations_.size() ? accelerations_[i] : vector::zero);
+        // the lift of one of the parcel's particles times their number, the
+        // added mass on the parcel's volume like the pressure gradient force
+        F[i] =
+            parcels_.dragFactor(type)
+           *liftAndVirtualMass_.lift(d, rho_, nu, Up[i]/s, vorticityP[i]/s, v[i])
+          + parcels_.volumeForceFactor(type)
+           *liftAndVirtualMass_.virtualMassForce(volumes[i], rho_, DUDtP[i]/s, a);
+        perWeight[i] = F[i]/s;
+    }
+    voidFraction_->spread(perWeight, cellForce);
 }
 
 
@@ -461,7 +538,8 @@ void Foam::particleFluidCoupling::addFluidForces
     if (last) forceMean_.setSize(F.size());
     auto force = [&](const label i, const vector& Up, const vector& gradP)
     {
-        const vector drag(beta_[i]*(Up - weightSum_[i]*v[i]));
+        vector drag(beta_[i]*(Up - weightSum_[i]*v[i]));
+        if (liftAndVirtualMassForce_.size()) drag += liftAndVirtualMassForce_[i];
         vector f(F[i] + drag);
         const scalar volume = parcels_.volumeForceFactor(particles_.type(i))*volumes[i];
         if (pressureGradientForce_ && weightSum_[i] > SMALL)
@@ -516,7 +594,7 @@ void Foam::particleFluidCoupling::checkMomentumBalance
     put(3, rho_*sum
     (
         mesh_.V().field()*(Ksl_.primitiveField()*U.primitiveField()
-      - dragSource_.primitiveField())
+      - explicitSource_.primitiveField())
     ));
     if (last)
     {
@@ -552,7 +630,7 @@ void Foam::particleFluidCoupling::endStep
     if (mesh_.time().writeTime())
     {
         Ksl_.correctBoundaryConditions();
-        dragSource_.correctBoundaryConditions();
+        explicitSource_.correctBoundaryConditions();
     }
     timeForces_ += clock_.timeIncrement();
 

@@ -68,3 +68,20 @@ def particle_diameter(case="."):
         return _dem(case, r"\bdiameter\s+%s" % NUMBER, "diameter")
     except SystemExit:
         return 2*_dem(case, r"\bradius\s+constant\s+%s" % NUMBER, "diameter")
+
+
+def schiller_naumann_cd(re_p):
+    """drag coefficient of a single sphere (Schiller and Naumann 1933), 0.44 above Re 1000"""
+    return 24/re_p*(1 + 0.15*re_p**0.687) if re_p < 1000 else 0.44
+
+
+def terminal_velocity(case="."):
+    """m/s, the case's particle settling alone in its fluid with Schiller-Naumann drag"""
+    from scipy.optimize import brentq
+    nu, rho_f, _ = fluid(case)
+    rho_p, d, g = particle_density(case), particle_diameter(case), gravity(case)
+
+    def excess(v):
+        """weight less buoyancy less drag, divided by pi"""
+        return (rho_p - rho_f)*g*d**3/6 - schiller_naumann_cd(v*d/nu)*rho_f*d*d*v*v/8
+    return brentq(excess, 1e-9, 100.0)

@@ -7,7 +7,6 @@ the terminal velocities and the largest deviation after the start."""
 import sys
 import numpy as np
 from scipy.integrate import solve_ivp
-from scipy.optimize import brentq
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
@@ -26,18 +25,14 @@ rho_p, d = caseProperties.particle_density(), caseProperties.particle_diameter()
 g = caseProperties.gravity()
 
 
-def cd(re):
-    return 24/re*(1 + 0.15*re**0.687) if re < 1000 else 0.44
-
-
 def accel(v):
     """dv/dt of a sphere falling at speed v (down positive): gravity, buoyancy, drag"""
     re = max(rho_f*abs(v)*d/mu, 1e-12)
-    drag = 0.75*rho_f/(rho_p*d)*cd(re)*abs(v)*v
+    drag = 0.75*rho_f/(rho_p*d)*caseProperties.schiller_naumann_cd(re)*abs(v)*v
     return (1 - rho_f/rho_p)*g - drag
 
 
-v_terminal = brentq(accel, 1e-6, 10.0)
+v_terminal = caseProperties.terminal_velocity()
 data = np.loadtxt("DEM/post/history.txt")
 t, z, vz = data[:, 0], data[:, 1], -data[:, 2]
 ref = solve_ivp(lambda s, v: [accel(v[0])], (0, t[-1]), [0.0], t_eval=t,

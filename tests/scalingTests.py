@@ -15,7 +15,7 @@ import numpy as np
 
 import checks
 from checks import WORK, check, near
-from foamCase import sh
+from foamCase import sh, write_dump
 from couplingTests import check_coupling_log, copy_tutorial as tutorial, coupling_forces, edit
 
 def scaled(case, h):
@@ -370,6 +370,74 @@ def test_run_bits():
         check("scaleCase%s: ./Allclean runs in the copy" % option, rc == 0, text[-300:])
 
 
+def test_bed_rule():
+    print("scaleCase -parcels -minCells: cells by the bed's needs, the smoothing kept in metres")
+    case = tutorial("fluidisedBed", "rule-source")
+    sh("sed -e 's/NX/16/g; s/NY/2/g; s/NZP/2/g; s/NZ/40/g' system/blockMeshDict.template > system/blockMeshDict",
+       case)
+    # worked by hand for h = 2 and at least 12 cells across the bed's 42 mm (widths <= 3.5 mm):
+    # x 16 -> 8, y 2 -> 1, z 40 cells over 120 mm -> ceil(120/3.5) = 35, the plenum's 2 over 6 mm
+    # stay 2; the narrowest growth 2/2 = 1: deltaT and the coupling time stay 1e-4 s, in
+    # ceil(1e-4/(1e-5 2^1.5)) = 4 DEM steps; the largest cell grows by (2 x 2 x 40/35)^(1/3), so
+    # kernel's 0.4 becomes 0.241070 and diffusion's 0.12 becomes 0.0435848 (a over growth^2)
+    out = case + "-h2"
+    rc, text = sh("scaleCase -factor 2 -parcels cubic -minCells '(z 12 0.042)' -output %s -overwrite" % out,
+                  case, check=False)
+    check("h = 2, (z 12 0.042): scaleCase ran", rc == 0, text[-600:] if rc else "")
+    if rc == 0:
+        blocks = re.findall(r"hex \([^)]*\) (\([^)]*\))", open(os.path.join(out, "system", "blockMeshDict")).read())
+        check("h = 2, (z 12 0.042): blocks (8 1 2) and (8 1 35), the rule said", blocks == ["(8 1 2)", "(8 1 35)"]
+              and "z: 35 cells, widths of at most 0.0035 m, not 20" in text, "(%s)" % blocks)
+        control = open(os.path.join(out, "system", "controlDict")).read()
+        props = open(os.path.join(out, "constant", "couplingProperties")).read()
+        dem = open(os.path.join(out, "DEM", "in.parameters")).read()
+        got = (float(re.search(r"(?m)^deltaT\s+(\S+);", control).group(1)),
+               int(re.search(r"(?m)^couplingInterval\s+(\d+);", props).group(1)),
+               float(re.search(r"(?m)^variable\s+demStep\s+equal\s+(\S+)", dem).group(1)))
+        check("h = 2, (z 12 0.042): deltaT 1e-4, 4 DEM steps of 2.5e-5 per coupling",
+              abs(got[0] - 1e-4) < 1e-18 and got[1] == 4 and abs(got[2] - 2.5e-5) < 1e-18, "(%s)" % (got,))
+        b = re.search(r"kernelCoeffs \{ bandwidthOverCellSize (\S+); \}", props)
+        a = re.search(r"diffusionCoeffs \{ coefficient (\S+);", props)
+        near("h = 2: kernel's bandwidthOverCellSize keeps 0.4 x 3 mm (written, 6 digits)",
+             float(b.group(1)) if b else None, 0.4/(2*2*40/35)**(1/3), 1e-6)
+        near("h = 2: diffusion's coefficient keeps 0.12 x (3 mm)^2 (written, 6 digits)",
+             float(a.group(1)) if a else None, 0.12/(2*2*40/35)**(2/3), 1e-7)
+        check("h = 2, a bed 21 parcels tall: no warning", "FOAM Warning" not in text)
+        # the written entries merged into the dictionary the model reads: the bed maps
+        sh("cp -r 0.orig 0 && blockMesh > log.blockMesh", out)
+        for model, needle in (("kernel", "bandwidth"), ("diffusion", "coefficient")):
+            edit(os.path.join(out, "constant", "couplingProperties"), r"^voidFractionModel\s+\w+;",
+                 "voidFractionModel %s;" % model)
+            write_dump(os.path.join(out, "one.dump"), [(0.024, 0.003, 0.02)], [0.001])
+            rc, text = sh("demVoidFraction -dump one.dump", out, check=False)
+            check("h = 2: %s reads the merged coefficients and maps" % model,
+                  rc == 0 and "conservation" in text.lower(), text[-400:] if rc else "")
+    # a thin bed, and centroid with parcels wider than a cell: warned, with the numbers
+    rc, text = sh("scaleCase -factor 2 -parcels cubic -minCells '(z 12 0.018)' -output %s-thin -overwrite" % case,
+                  case, check=False)
+    check("h = 2, a bed of 18 mm: 9 parcels across in z, fewer than 10, warned",
+          rc == 0 and "the bed is 9 parcels across in z" in text and "fewer than 10" in text, text[-500:])
+    edit(os.path.join(case, "constant", "couplingProperties"), r"^voidFractionModel\s+\w+;", "voidFractionModel centroid;")
+    rc, text = sh("scaleCase -factor 4 -parcels cubic -minCells '(z 12 0.042)' -output %s-h4 -overwrite" % case,
+                  case, check=False)
+    check("h = 4, centroid: parcels of 4 mm wider than the 3.43 mm cells, warned",
+          rc == 0 and "parcels of 0.004 m are wider than the narrowest cell" in text, text[-500:])
+    # -relativeSmoothing: the cells by h and nothing appended
+    rc, text = sh("scaleCase -factor 2 -parcels cubic -relativeSmoothing -output %s-rel -overwrite" % case,
+                  case, check=False)
+    props = open(os.path.join(case + "-rel", "constant", "couplingProperties")).read() if rc == 0 else ""
+    check("-relativeSmoothing: no smoothing entries written, deltaT 2e-4", rc == 0 and "kernelCoeffs" not in props
+          and "-> 0.0002 s" in text, text[-400:])
+    for rules, needle in (("(q 3)", "not a list"), ("(z 0)", "not a positive whole number"),
+                          ("(z 3 -1)", "not a positive length"), ("(z 3) (z 4)", "two rules for z")):
+        rc, text = sh("scaleCase -factor 2 -parcels cubic -minCells '%s' -output %s-bad -overwrite" % (rules, case),
+                      case, check=False)
+        check("-minCells '%s': error says '%s'" % (rules, needle), rc == 1 and needle in text, text[-300:])
+    rc, text = sh("scaleCase -factor 2 -parcels cubic -keepMesh -minCells '(z 3)' -output %s-bad -overwrite" % case,
+                  case, check=False)
+    check("-minCells with -keepMesh: refused", rc == 1 and "goes with -parcels and a coarsened fluid" in text)
+
+
 def test_wide_bed_study():
     print("coarseGrainedBed study: the wide bed and its coarsened cases as set up, and the summary's comparison")
     sys.path.insert(0, os.path.join(checks.ROOT, "benchmarks", "coarseGrainedBed"))
@@ -384,7 +452,10 @@ def test_wide_bed_study():
     expect = {(1, "fine"): ("80000", "0.0005", ["(32 8 2)", "(32 8 40)"], 10752, 1e-4),
               (2, "fine"): ("10000", "0.001", ["(32 8 2)", "(32 8 40)"], 10752, 1e-4),
               (3, "coarsened"): ("2963", "0.0015", ["(10 3 1)", "(10 3 13)"], 420, 3e-4),
-              (4, "coarsened"): ("1250", "0.002", ["(8 2 1)", "(8 2 10)"], 176, 4e-4)}
+              (4, "coarsened"): ("1250", "0.002", ["(8 2 1)", "(8 2 10)"], 176, 4e-4),
+              # at least 12 cells across the 42 mm bed: z 40 -> 35, the plenum's 2 stay, deltaT stays
+              (3, "bed"): ("2963", "0.0015", ["(10 3 2)", "(10 3 35)"], 1110, 1e-4),
+              (4, "bed"): ("1250", "0.002", ["(8 2 2)", "(8 2 35)"], 592, 1e-4)}
     for (h, mesh), (count, radius, blocks, cells, dt) in expect.items():
         case = os.path.join(work, study.run_name("kernel", h, "cubic", False, mesh))
         try:
@@ -424,7 +495,7 @@ def test_wide_bed_study():
 
 def main():
     checks.run([test_written_values, test_settling_sphere, test_packed_bed, test_fluidised_bed,
-                test_parcel_parameters, test_coarsened_fluid, test_compression_precision, test_bad_input, test_run_bits,
+                test_parcel_parameters, test_coarsened_fluid, test_bed_rule, test_compression_precision, test_bad_input, test_run_bits,
                 test_wide_bed_study], sys.argv[1:])
     return checks.summary("scaling")
 

@@ -9,8 +9,11 @@ inlet and cells), wide and deep enough that the mesh coarsened by h = 4
 still has 8 cells across and 2 through the depth.
 Each coarse system is `scaleCase -factor h -parcels <law>` of it: parcels of
 h^3 beads, the drag scaled by h^3 (cubic) or h^2 (exact), with --mesh fine
-(-keepMesh: the fine bed's mesh and steps) or --mesh coarsened (cells,
-fluid and coupling steps coarsened with the parcels as scaleCase prints).
+(-keepMesh: the fine bed's mesh and steps), --mesh coarsened (cells,
+fluid and coupling steps coarsened by h, the smoothing relative to the
+cells: -relativeSmoothing) or --mesh bed (coarsened by at most h, at least
+12 cells across the settled bed's height, the smoothing in metres:
+-minCells).
 Each run packs its bed with LIGGGHTS, runs pimpleDEMFoam on --ranks ranks
 and records:
   - bubbling (inlet 1 m/s, END s): the pressure drop averaged over
@@ -32,7 +35,7 @@ drop, Umf, bed height and fluid fraction profile against the fine bed's
 (same bed, same model; the coarse profile interpolated to the fine bed's
 cell layers) and the speed-up in wall-clock time per simulated second.
 
-usage: study.py [--bed tutorial|wide] [--mesh fine|coarsened] [--ranks 1]
+usage: study.py [--bed tutorial|wide] [--mesh fine|coarsened|bed] [--ranks 1]
                 [--models analytical,kernel,centroid] [--factors 1,1.5,2,3]
                 [--laws cubic,exact] [--end 2.0] [--ramp] [--jobs 2]
                 [--report] [--results DIR]
@@ -72,6 +75,8 @@ FIXED_BED_U = 0.35
 BEDS = {"tutorial": dict(width=48, depth=6, count=10000, NX=16, NY=2),
         "wide": dict(width=96, depth=24, count=80000, NX=32, NY=8)}
 MESH_Z = dict(NZ=40, NZP=2)
+# --mesh bed: at least 12 cells across the settled bed's 42 mm (both beds' fine height)
+BED_MIN_CELLS = "(z 12 0.042)"
 OUTPUTS = shutil.ignore_patterns("[1-9]*", "0.[0-9]*", "0", "postProcessing", "VTK", "log.*", "parcels_h*",
                                  "stress", "processor*", "*.png", "*.result", "post")
 
@@ -88,7 +93,7 @@ def shell(cmd, cwd, log=None):
 
 def run_name(model, h, law, ramp, mesh="fine"):
     return "%s_%s_h%g%s%s" % ("ramp" if ramp else "bubbling", model, h, "" if h == 1 else "_" + law,
-                              "_coarsened" if h != 1 and mesh == "coarsened" else "")
+                              "_" + mesh if h != 1 and mesh != "fine" else "")
 
 
 def bed_dirs(bed, results):
@@ -135,8 +140,10 @@ def make_case(case, source, model, h, law, ramp, end, mesh, ranks):
     if h == 1:
         shutil.copytree(source, case, ignore=OUTPUTS)
     else:
+        mesh_options = {"fine": " -keepMesh", "coarsened": " -relativeSmoothing",
+                        "bed": " -minCells '%s'" % BED_MIN_CELLS}[mesh]
         shell("scaleCase -factor %g -parcels %s%s -output %s -overwrite"
-              % (h, law, " -keepMesh" if mesh == "fine" else "", case), source,
+              % (h, law, mesh_options, case), source,
               os.path.join(os.path.dirname(case), "log.scaleCase." + os.path.basename(case)))
     os.makedirs(os.path.join(case, "DEM", "post"), exist_ok=True)
     edit(os.path.join(case, "constant", "couplingProperties"),
@@ -387,7 +394,7 @@ def write_table(rows, umf_ref, where):
 def label(r):
     if r["h"] == 1:
         return "fine"
-    mesh = "coarsened" if r.get("mesh") == "coarsened" else "fine mesh"
+    mesh = {"coarsened": "coarsened", "bed": "bed's cells"}.get(r.get("mesh"), "fine mesh")
     return "h = %g %s, %s" % (r["h"], r["law"], mesh)
 
 
@@ -437,8 +444,10 @@ def plot(runs, umf_ref, where):
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--bed", choices=sorted(BEDS), default="tutorial")
-    p.add_argument("--mesh", choices=("fine", "coarsened"), default="fine",
-                   help="the coarse runs on the fine bed's mesh (-keepMesh) or on the mesh coarsened by h")
+    p.add_argument("--mesh", choices=("fine", "coarsened", "bed"), default="fine",
+                   help="the coarse runs on the fine bed's mesh (-keepMesh), on the mesh coarsened by h with "
+                   "the smoothing relative to the cells, or (bed) coarsened by at most h keeping "
+                   + BED_MIN_CELLS + " and the smoothing in metres")
     p.add_argument("--ranks", type=int, default=1)
     p.add_argument("--models", default="analytical,kernel,centroid")
     p.add_argument("--factors", default="1,1.5,2,3")

@@ -415,7 +415,18 @@ void Foam::caseScaler::scaleDemData(const fileName& file) const
 }
 
 
-void Foam::caseScaler::makeParcels(const word& law, const bool coarsenFluid) const
+// the thinnest coarse bed measured to keep the fine bed's pressure drop
+// and Umf: the wide bed at h = 4, 10.5 parcels tall (docs/coarseGraining.md)
+const Foam::label Foam::caseScaler::minParcelsAcross = 10;
+
+
+void Foam::caseScaler::makeParcels
+(
+    const word& law,
+    const bool coarsenFluid,
+    const List<fluidCoarsener::minCellRule>& minCells,
+    const bool relativeSmoothing
+) const
 {
     const bool exact = (law == "exact");
     if (!exact && law != "cubic")
@@ -434,7 +445,11 @@ void Foam::caseScaler::makeParcels(const word& law, const bool coarsenFluid) con
     // 2D: a parcel is a disk of h^2 disks, its mass (per depth) h^2
     const bool twoD = couplingDict.getOrDefault<bool>("twoDimensional", false);
     const scalar perParcel = std::pow(h_, twoD ? 2 : 3);
-    if (coarsenFluid) fluidCoarsener(dir_, h_).coarsen();
+    fluidCoarsener::meshGrowth growth{h_, h_, GREAT};
+    if (coarsenFluid)
+    {
+        growth = fluidCoarsener(dir_, h_, minCells, relativeSmoothing).coarsen();
+    }
     const scalar deltaT = read(dir_/"system"/"controlDict").get<scalar>("deltaT");
     std::ofstream(coupling, std::ios::app)
         << "\ncoarseGraining { factor " << h_ << "; forceScaling " << law
@@ -449,7 +464,7 @@ void Foam::caseScaler::makeParcels(const word& law, const bool coarsenFluid) con
     {
         if (coarsenFluid)
         {
-            const scalar couplingTime = interval*fine*h_;
+            const scalar couplingTime = interval*fine*growth.time;
             newInterval = max(label(std::ceil(couplingTime/allowed - 1e-9)), label(1));
             return couplingTime/newInterval;
         }
@@ -492,10 +507,11 @@ void Foam::caseScaler::makeParcels(const word& law, const bool coarsenFluid) con
     {
         setCouplingInterval(newInterval);
         Info<< "    couplingInterval: " << interval << " -> " << newInterval << " DEM steps"
-            << " (the coupling time times " << h_ << ", in DEM steps no longer than the"
-            << " law allows)" << nl;
+            << " (the coupling time times " << growth.time << ", as the fluid step, in DEM"
+            << " steps no longer than the law allows)" << nl;
     }
     Info<< endl;
+    warnOfNarrowBeds(couplingDict, minCells, growth.narrowestCell);
 }
 
 
@@ -536,5 +552,52 @@ void Foam::caseScaler::scaleAll() const
     for (const fileName& f : readDir(dir_/"DEM", fileName::FILE))
     {
         if (f.hasExt("data")) scaleDemData(dir_/"DEM"/f);
+    }
+}
+
+
+void Foam::caseScaler::warnOfNarrowBeds
+(
+    const dictionary& coupling,
+    const List<fluidCoarsener::minCellRule>& minCells,
+    const scalar narrowestCell
+) const
+{
+    // the parcel's diameter from the DEM's radius or diameter variable (a
+    // pass that keeps every value)
+    scalar parcel = 0;
+    rewriteDemParameters
+    (
+        [&](const demParameter& p)
+        {
+            if (p.roles.found("particle") && p.dims == dimLength)
+            {
+                if (p.name == "radius") parcel = 2*p.value;
+                if (p.name == "diameter") parcel = p.value;
+            }
+            return p.value;
+        }
+    );
+    if (!(parcel > 0)) return;
+    const word model(coupling.getOrDefault<word>("voidFractionModel", word::null));
+    if (model == "centroid" && parcel > narrowestCell)
+    {
+        WarningInFunction
+            << "parcels of " << parcel << " m are wider than the narrowest cell ("
+            << narrowestCell << " m): centroid puts each whole into one cell; kernel,"
+            << " diffusion or analytical spread it" << endl;
+    }
+    for (const fluidCoarsener::minCellRule& r : minCells)
+    {
+        if (r.length > 0 && r.length/parcel < minParcelsAcross)
+        {
+            WarningInFunction
+                << "the bed is " << r.length/parcel << " parcels across in "
+                << "xyz"[r.dir] << " (" << r.length << " m over parcels of " << parcel
+                << " m), fewer than " << minParcelsAcross << ": thinner than any coarse"
+                << " bed measured to keep the fine bed's pressure drop and Umf"
+                << " (docs/coarseGraining.md)"
+                << endl;
+        }
     }
 }

@@ -9,6 +9,8 @@
 #include "caseFiles.H"
 #include "OSspecific.H"
 #include "primitiveEntry.H"
+#include "smoothingDefaults.H"
+#include "pointField.H"
 #include <cmath>
 #include <regex>
 #include <sstream>
@@ -23,11 +25,66 @@ namespace
 }
 
 
-Foam::fluidCoarsener::fluidCoarsener(const fileName& dir, const scalar h)
+Foam::fluidCoarsener::fluidCoarsener
+(
+    const fileName& dir,
+    const scalar h,
+    const List<minCellRule>& minCells,
+    const bool relativeSmoothing
+)
 :
     h_(h),
-    dir_(dir)
+    dir_(dir),
+    minCells_(minCells),
+    relativeSmoothing_(relativeSmoothing)
 {}
+
+
+Foam::List<Foam::fluidCoarsener::minCellRule> Foam::fluidCoarsener::readMinCells
+(
+    const string& spec,
+    const word& option
+)
+{
+    // (dir count [length]) ...
+    const std::regex rule("\\(\\s*([xyz])\\s+(\\S+?)(?:\\s+(\\S+?))?\\s*\\)");
+    const std::regex whole("^\\s*(\\(\\s*[xyz][^()]*\\)\\s*)+$");
+    auto fail = [&](const std::string& why)
+    {
+        FatalErrorInFunction
+            << "-" << option << " '" << spec.c_str() << "': " << why.c_str()
+            << "; write rules as '(z 12 0.2) (x 20)': at least 12 cells across"
+            << " 0.2 m in z, 20 across the mesh in x" << exit(FatalError);
+    };
+    if (!std::regex_match(spec, whole)) fail("not a list of (direction count [length])");
+    List<minCellRule> rules;
+    for (std::sregex_iterator r(spec.begin(), spec.end(), rule), end; r != end; ++r)
+    {
+        const std::smatch& m = *r;
+        minCellRule c{direction(m[1].str()[0] - 'x'), -1, 0};
+        size_t used = 0;
+        try { c.count = std::stol(m[2].str(), &used); } catch (...) {}
+        if (used != m[2].str().size() || c.count < 1)
+        {
+            fail("'" + m[2].str() + "' is not a positive whole number of cells");
+        }
+        if (m[3].matched)
+        {
+            used = 0;
+            try { c.length = std::stod(m[3].str(), &used); } catch (...) {}
+            if (used != m[3].str().size() || !(c.length > 0))
+            {
+                fail("'" + m[3].str() + "' is not a positive length in metres");
+            }
+        }
+        for (const minCellRule& other : rules)
+        {
+            if (other.dir == c.dir) fail("two rules for " + m[1].str());
+        }
+        rules.append(c);
+    }
+    return rules;
+}
 
 
 Foam::label Foam::fluidCoarsener::coarsened(const label n, const scalar h, const label split)
@@ -51,7 +108,7 @@ Foam::labelVector Foam::fluidCoarsener::decompositionSplits() const
     const dictionary dict(caseFiles::readDict(file));
     const word method(dict.getOrDefault<word>("method", word::null));
     if (method != "simple" && method != "hierarchical") return n;
-    for (const word coeffs : {word("coeffs"), word(method + "Coeffs")})
+    for (const word& coeffs : {word("coeffs"), word(method + "Coeffs")})
     {
         const dictionary* d = dict.findDict(coeffs);
         if (d && d->found("n")) return d->get<labelVector>("n");
@@ -60,7 +117,7 @@ Foam::labelVector Foam::fluidCoarsener::decompositionSplits() const
 }
 
 
-void Foam::fluidCoarsener::coarsenBlocks() const
+Foam::fluidCoarsener::meshGrowth Foam::fluidCoarsener::coarsenBlocks() const
 {
     const fileName file(dir_/"system"/"blockMeshDict");
     const std::string keep
@@ -79,49 +136,142 @@ void Foam::fluidCoarsener::coarsenBlocks() const
             << keep.c_str() << exit(FatalError);
     }
     std::string text(caseFiles::readText(file));
+    // the vertices in metres, for the rules' cell widths
+    pointField vertices;
+    vector widest(Zero);
+    if (minCells_.size())
+    {
+        const dictionary dict(caseFiles::readDict(file));
+        vertices = dict.get<pointField>("vertices");
+        vertices *= dict.getOrDefault<scalar>
+        (
+            "scale", dict.getOrDefault<scalar>("convertToMeters", 1)
+        );
+        widest = max(vertices) - min(vertices);
+    }
+    vector maxWidth(GREAT, GREAT, GREAT);
+    for (const minCellRule& r : minCells_)
+    {
+        maxWidth[r.dir] = (r.length > 0 ? r.length : widest[r.dir])/r.count;
+    }
     // hex (vertices) [zone] (nx ny nz)
-    const std::regex block("(hex\\s*\\([^()]*\\)\\s*(?:[A-Za-z_]\\w*\\s*)?\\()([^()]*)(\\))");
+    const std::regex block
+    (
+        "(hex\\s*\\(([^()]*)\\)\\s*(?:[A-Za-z_]\\w*\\s*)?\\()([^()]*)(\\))"
+    );
     std::string out;
     auto from = text.cbegin();
     label index = 0;
     const labelVector splits(decompositionSplits());
     bool rounded = false;
+    meshGrowth growth{h_, 1, GREAT};
+    bool held = false;
+    scalar fineSize = 0, coarseSize = 0;
     for (std::sregex_iterator b(text.begin(), text.end(), block), end; b != end; ++b, ++index)
     {
         const std::smatch& m = *b;
-        std::istringstream is(m[2].str());
-        std::vector<std::string> words;
-        for (std::string w; is >> w;) words.push_back(w);
-        std::ostringstream counts, before;
-        for (size_t d = 0; d < words.size(); ++d)
+        auto numbers = [&](const std::string& words, const size_t count, const char* what)
         {
-            size_t used = 0;
-            long n = -1;
-            try { n = std::stol(words[d], &used); } catch (...) {}
-            if (words.size() != 3 || used != words[d].size() || n < 1)
+            std::istringstream is(words);
+            std::vector<long> n;
+            for (std::string w; is >> w;)
+            {
+                size_t used = 0;
+                long v = -1;
+                try { v = std::stol(w, &used); } catch (...) {}
+                if (used != w.size() || v < 0) n.push_back(-1);
+                else n.push_back(v);
+            }
+            bool ok = (n.size() == count);
+            for (const long v : n) ok = ok && v >= 0;
+            if (!ok)
             {
                 FatalErrorInFunction
                     << "cannot coarsen the fluid: " << file << " block " << index
-                    << " has cell counts (" << m[2].str().c_str() << "), not three whole"
-                    << " numbers" << keep.c_str() << exit(FatalError);
+                    << " has " << what << " (" << words.c_str() << "), not " << (count == 3 ? "three" : "eight")
+                    << " whole numbers" << keep.c_str() << exit(FatalError);
             }
-            const label c = coarsened(label(n), h_, splits[d]);
-            rounded = rounded || (c != coarsened(label(n), h_) && c > 0);
+            return n;
+        };
+        const std::vector<long> n(numbers(m[3].str(), 3, "cell counts"));
+        // the block's edges from vertex 0 along its x, y and z (OpenFOAM's
+        // hex numbering)
+        vector edge[3];
+        if (minCells_.size())
+        {
+            const std::vector<long> v(numbers(m[2].str(), 8, "vertices"));
+            for (const long i : v)
+            {
+                if (i >= vertices.size())
+                {
+                    FatalErrorInFunction
+                        << file << " block " << index << ": vertex " << label(i)
+                        << " of " << vertices.size() << exit(FatalError);
+                }
+            }
+            edge[0] = vertices[v[1]] - vertices[v[0]];
+            edge[1] = vertices[v[3]] - vertices[v[0]];
+            edge[2] = vertices[v[4]] - vertices[v[0]];
+        }
+        std::ostringstream counts, before, why;
+        label fineCells = 1, coarseCells = 1;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (n[d] < 1)
+            {
+                FatalErrorInFunction
+                    << "cannot coarsen the fluid: " << file << " block " << index
+                    << " has no cells in direction " << label(d) << keep.c_str()
+                    << exit(FatalError);
+            }
+            label c = coarsened(label(n[d]), h_, splits[d]);
+            rounded = rounded || (c != coarsened(label(n[d]), h_) && c > 0);
             if (c < 1)
             {
                 FatalErrorInFunction
                     << "cannot coarsen the fluid by " << h_ << ": " << file << " block "
-                    << index << " has " << n << " cells in direction " << label(d)
+                    << index << " has " << label(n[d]) << " cells in direction " << label(d)
                     << ", which would round to none" << keep.c_str() << exit(FatalError);
             }
+            const scalar length = mag(edge[d]);
+            const direction axis =
+                cmptMax(cmptMag(edge[d])) == mag(edge[d].x()) ? 0
+              : cmptMax(cmptMag(edge[d])) == mag(edge[d].y()) ? 1 : 2;
+            if (n[d] > 1 && length > 0 && maxWidth[axis] < GREAT)
+            {
+                label need = label(std::ceil(length/maxWidth[axis] - 1e-9));
+                const label split = splits[d];
+                if (split > 1 && n[d] % split == 0)
+                {
+                    need = ((need + split - 1)/split)*split;
+                }
+                need = min(need, label(n[d]));
+                if (need > c)
+                {
+                    why << "; " << "xyz"[axis] << ": " << need << " cells, widths of at most "
+                        << maxWidth[axis] << " m, not " << c;
+                    c = need;
+                    held = true;
+                }
+            }
+            if (n[d] > 1) growth.time = min(growth.time, scalar(n[d])/c);
+            if (length > 0) growth.narrowestCell = min(growth.narrowestCell, length/c);
+            fineCells *= label(n[d]);
+            coarseCells *= c;
             counts << (d ? " " : "") << c;
-            before << (d ? " " : "") << n;
+            before << (d ? " " : "") << n[d];
+        }
+        if (minCells_.size())
+        {
+            const scalar volume = mag(edge[0] & (edge[1] ^ edge[2]));
+            fineSize = max(fineSize, cbrt(volume/fineCells));
+            coarseSize = max(coarseSize, cbrt(volume/coarseCells));
         }
         Info<< "    block " << index << ": cells (" << before.str().c_str() << ") -> ("
-            << counts.str().c_str() << ")" << nl;
+            << counts.str().c_str() << ")" << why.str().c_str() << nl;
         out.append(from, m[1].second);
         out += counts.str();
-        from = m[3].first;
+        from = m[4].first;
     }
     if (rounded)
     {
@@ -134,6 +284,9 @@ void Foam::fluidCoarsener::coarsenBlocks() const
             << "cannot coarsen the fluid: " << file << " has no hex block"
             << keep.c_str() << exit(FatalError);
     }
+    // without rules the cells grow by h, as the steps do
+    if (!held) growth.time = h_;
+    growth.cellSize = fineSize > 0 ? coarseSize/fineSize : h_;
     out.append(from, text.cend());
     caseFiles::writeText(file, out);
     if (isDir(dir_/"constant"/"polyMesh"))
@@ -141,6 +294,7 @@ void Foam::fluidCoarsener::coarsenBlocks() const
         rmDir(dir_/"constant"/"polyMesh");
         Info<< "    constant/polyMesh removed: run blockMesh in the coarse case" << nl;
     }
+    return growth;
 }
 
 
@@ -163,22 +317,23 @@ void Foam::fluidCoarsener::requireUniformFields() const
 }
 
 
-void Foam::fluidCoarsener::coarsenControl() const
+void Foam::fluidCoarsener::coarsenControl(const scalar growth) const
 {
     const fileName file(dir_/"system"/"controlDict");
     dictionary dict(caseFiles::readDict(file));
     const scalar deltaT = dict.get<scalar>("deltaT");
-    dict.set("deltaT", deltaT*h_);
-    Info<< "    deltaT: " << deltaT << " -> " << deltaT*h_ << " s (cells " << h_
-        << " times wider at the same velocities: the fine case's Courant number)" << nl;
+    dict.set("deltaT", deltaT*growth);
+    Info<< "    deltaT: " << deltaT << " -> " << deltaT*growth << " s (the narrowest cells "
+        << growth << " times wider at the same velocities: the fine case's Courant number)"
+        << nl;
     auto keepPeriod = [&](dictionary& d, const string& where)
     {
         if (!timeStepControlled(d)) return;
         const label n = d.get<label>("writeInterval");
-        const label m = max(label(std::round(n/h_)), label(1));
+        const label m = max(label(std::round(n/growth)), label(1));
         d.set("writeInterval", m);
         Info<< "    " << where.c_str() << "writeInterval: " << n << " -> " << m
-            << " time steps (" << n*deltaT << " -> " << m*deltaT*h_ << " s)" << nl;
+            << " time steps (" << n*deltaT << " -> " << m*deltaT*growth << " s)" << nl;
     };
     keepPeriod(dict, "");
     dictionary* functions = dict.findDict("functions");
@@ -193,7 +348,7 @@ void Foam::fluidCoarsener::coarsenControl() const
 }
 
 
-void Foam::fluidCoarsener::coarsenLengths() const
+void Foam::fluidCoarsener::coarsenLengths(const scalar cellGrowth) const
 {
     // line by line, the part before a // comment, so that the file keeps
     // its layout and comments
@@ -210,25 +365,92 @@ void Foam::fluidCoarsener::coarsenLengths() const
         while (std::regex_search(code, m, length))
         {
             const scalar v = std::stod(m[3].str());
+            // voxels follow the parcels; a smoothing length the cells only
+            // when asked
+            const scalar f =
+                m[1].str() == "voxelSize" ? h_ : relativeSmoothing_ ? cellGrowth : 1;
             std::ostringstream num;
             num.precision(15);
-            num << v*h_;
+            num << v*f;
             done += m.prefix().str() + m[1].str() + m[2].str() + num.str() + m[4].str();
             code = m.suffix().str();
             Info<< "    couplingProperties " << m[1].str().c_str() << ": " << v << " -> "
-                << v*h_ << " m" << nl;
+                << v*f << " m" << (f == 1 ? " (the fine case's smoothing length)" : "") << nl;
         }
         out << done << code << (comment == std::string::npos ? "" : line.substr(comment)) << '\n';
+    }
+    if (!relativeSmoothing_)
+    {
+        out << keepSmoothingLength(caseFiles::readDict(file), cellGrowth);
     }
     caseFiles::writeText(file, out.str());
 }
 
 
-void Foam::fluidCoarsener::coarsen() const
+std::string Foam::fluidCoarsener::keepSmoothingLength
+(
+    const dictionary& coupling,
+    const scalar cellGrowth
+)
+{
+    // entries appended to the file: OpenFOAM merges a repeated
+    // sub-dictionary into the first, so only these keys change
+    const bool twoD = coupling.getOrDefault<bool>("twoDimensional", false);
+    std::ostringstream out;
+    out.precision(6);
+    auto kernel = [&](const dictionary* d, const std::string& where)
+    {
+        if (d && d->found("bandwidth")) return std::string();
+        const scalar b = d
+          ? d->getOrDefault<scalar>
+            (
+                "bandwidthOverCellSize", smoothingDefaults::kernelBandwidthOverCellSize()
+            )
+          : smoothingDefaults::kernelBandwidthOverCellSize();
+        Info<< "    " << where.c_str() << "bandwidthOverCellSize: " << b << " -> "
+            << b/cellGrowth << " (the largest cell " << cellGrowth << " times the fine"
+            << " one's size: the fine case's smoothing length)" << nl;
+        std::ostringstream e;
+        e.precision(6);
+        e << "kernelCoeffs { bandwidthOverCellSize " << b/cellGrowth << "; }";
+        return e.str();
+    };
+    out << "\n// scaleCase -parcels: smoothing over the fine case's lengths (merged into the"
+        << " entries above)\n" << kernel(coupling.findDict("kernelCoeffs"), "kernelCoeffs ")
+        << "\n";
+    const dictionary* diffusion = coupling.findDict("diffusionCoeffs");
+    std::string inner;
+    if (!(diffusion && diffusion->found("bandwidth")))
+    {
+        const scalar a = diffusion
+          ? diffusion->getOrDefault<scalar>
+            (
+                "coefficient", smoothingDefaults::diffusionCoefficient(twoD)
+            )
+          : smoothingDefaults::diffusionCoefficient(twoD);
+        const scalar aNew = a/sqr(cellGrowth);
+        Info<< "    diffusionCoeffs coefficient: " << a << " -> " << aNew
+            << " (D = a (cell size)^2: the fine case's smoothing length)" << nl;
+        std::ostringstream e;
+        e.precision(6);
+        e << "coefficient " << aNew << "; ";
+        inner += e.str();
+    }
+    if (diffusion && diffusion->getOrDefault<word>("initial", "centroid") == "kernel")
+    {
+        inner += kernel(diffusion->findDict("kernelCoeffs"), "diffusionCoeffs/kernelCoeffs ");
+    }
+    if (inner.size()) out << "diffusionCoeffs { " << inner << " }\n";
+    return out.str();
+}
+
+
+Foam::fluidCoarsener::meshGrowth Foam::fluidCoarsener::coarsen() const
 {
     Info<< "The fluid coarsened with the parcels (factor " << h_ << "):" << nl;
     requireUniformFields();
-    coarsenBlocks();
-    coarsenControl();
-    coarsenLengths();
+    const meshGrowth growth(coarsenBlocks());
+    coarsenControl(growth.time);
+    coarsenLengths(growth.cellSize);
+    return growth;
 }

@@ -37,9 +37,12 @@ Description
     dictionary in couplingProperties, the DEM parameters marked {particle},
     {count} or {timestep} in DEM/in.parameters scaled by the law (see
     caseScaler), and the fluid coarsened with them: blockMeshDict's cell
-    counts divided by h, the fluid step and the coupling time times h
-    (see fluidCoarsener), every change printed. -keepMesh keeps the fluid's
-    mesh and steps (the parcels then see h times fewer cells each).
+    counts divided by at most h (less where -minCells asks for more cells
+    across the bed), the fluid step and the coupling time times the least
+    growth of a cell, the smoothing of kernel and diffusion kept in metres
+    unless -relativeSmoothing (see fluidCoarsener), every change printed.
+    -keepMesh keeps the fluid's mesh and steps (the parcels then see h
+    times fewer cells each).
     A 2D case (twoDimensional true in couplingProperties) gets parcels of
     h^2 disks.
 
@@ -47,6 +50,7 @@ Usage
     scaleCase -factor 2 -output ../bed-h2
     scaleCase -factor 2 -parcels cubic -output ../bed-parcels
     scaleCase -factor 2 -parcels cubic -keepMesh -output ../bed-parcels-fine
+    scaleCase -factor 4 -parcels cubic -minCells '(z 12 0.042)' -output ../bed-h4
 
 \*---------------------------------------------------------------------------*/
 
@@ -100,9 +104,31 @@ int main(int argc, char *argv[])
         "keepMesh",
         "with -parcels: keep the fluid's mesh, time step and coupling interval"
     );
+    argList::addOption
+    (
+        "minCells", "rules",
+        "with -parcels: at least so many cells across a length, e.g."
+        " '(z 12 0.2) (x 20)': 12 across the 0.2 m settled bed in z, 20 across"
+        " the mesh in x (cells grow by h at most, and less where a rule says)"
+    );
+    argList::addBoolOption
+    (
+        "relativeSmoothing",
+        "with -parcels: kernel's and diffusion's smoothing grows with the cells"
+        " (default: the fine case's length in metres)"
+    );
     #include "setRootCase.H"
 
     const scalar h = finiteOption(args, "factor");
+    for (const word option : {"minCells", "relativeSmoothing"})
+    {
+        if (args.found(option) && (!args.found("parcels") || args.found("keepMesh")))
+        {
+            FatalErrorInFunction
+                << "-" << option << " goes with -parcels and a coarsened fluid"
+                << " (not -keepMesh)" << exit(FatalError);
+        }
+    }
     if (args.found("keepMesh") && !args.found("parcels"))
     {
         FatalErrorInFunction
@@ -156,7 +182,15 @@ int main(int argc, char *argv[])
                 << "-factor " << h << ": a parcel stands for h^3 >= 1 particles"
                 << exit(FatalError);
         }
-        caseScaler(outputAbs, h).makeParcels(args.get<word>("parcels"), !args.found("keepMesh"));
+        caseScaler(outputAbs, h).makeParcels
+        (
+            args.get<word>("parcels"),
+            !args.found("keepMesh"),
+            args.found("minCells")
+              ? fluidCoarsener::readMinCells(args["minCells"], "minCells")
+              : List<fluidCoarsener::minCellRule>(),
+            args.found("relativeSmoothing")
+        );
     }
     else
     {

@@ -5,6 +5,7 @@
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
 #include "diffusion.H"
+#include "smoothingDefaults.H"
 #include "addToRunTimeSelectionTable.H"
 #include "laplacianScheme.H"
 #include "snGradScheme.H"
@@ -133,7 +134,11 @@ void Foam::voidFractionModels::diffusion::readDiffusivity()
     }
     else
     {
-        const scalar a = positiveCoeff("coefficient", seedDefault(0.12, 0.17));
+        const scalar a = positiveCoeff
+        (
+            "coefficient",
+            smoothingDefaults::diffusionCoefficient(twoDimensional())
+        );
         volScalarField D
         (
             IOobject("D", mesh().time().timeName(), mesh(),

@@ -5,6 +5,7 @@
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
 #include "kernel.H"
+#include "smoothingDefaults.H"
 #include "addToRunTimeSelectionTable.H"
 #include "emptyPolyPatch.H"
 #include "expBatch.H"
@@ -117,7 +118,11 @@ Foam::voidFractionModels::kernel::kernel
     else
     {
         bandwidthOverCellSize_ =
-            positiveCoeff("bandwidthOverCellSize", 0.4);
+            positiveCoeff
+            (
+                "bandwidthOverCellSize",
+                smoothingDefaults::kernelBandwidthOverCellSize()
+            );
     }
     cellSize_.setSize(mesh.nCells());
     forAll(cellSize_, celli) cellSize_[celli] = cellSize(celli);

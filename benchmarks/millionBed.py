@@ -106,9 +106,9 @@ def coarse_run(fine, h, model, end, z_factor=1):
         if result.get("end") == end:
             print("  %s: kept" % name, flush=True)
             return result
-    print("  %s: scaleCase -factor %g -parcels %s (the fluid coarsened with the parcels)" % (name, h, LAW),
+    print("  %s: scaleCase -factor %g -parcels %s -relativeSmoothing (the fluid coarsened by h)" % (name, h, LAW),
           flush=True)
-    couplingScale.sh("scaleCase -factor %g -parcels %s -output %s -overwrite" % (h, LAW, case), fine, "log.scaleCase." + name)
+    couplingScale.sh("scaleCase -factor %g -parcels %s -relativeSmoothing -output %s -overwrite" % (h, LAW, case), fine, "log.scaleCase." + name)
     text = open(os.path.join(fine, "log.scaleCase." + name)).read()
     for line in text.split("\n"):
         if re.search(r"cells|deltaT|couplingInterval|count|radius", line) and "->" in line:

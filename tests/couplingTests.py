@@ -6,6 +6,7 @@ Saffman-Mei lift, the added-mass ODE, Richardson-Zaki, Ergun, bed weight,
 Wen-Yu), exact momentum exchange, restart, serial against 2 ranks, and bad
 input stopping with a clear error and no hang."""
 import csv
+import glob
 import json
 import math
 import os
@@ -556,6 +557,51 @@ def test_riser():
     check_coupling_log("riser, 2 ranks", os.path.join(case, "log.pimpleDEMFoam"), 0.9)
 
 
+def test_spouted_bed():
+    print("spoutedBed tutorial at h = 4: the parcels, the fluid by the bed's rule, the jet, 2 ranks = serial")
+    case = copy_tutorial("spoutedBed", "spoutedBed")
+    rc, out = sh("./Allrun 4 analytical 0.18 1", case, check=False)
+    check("Allrun at h = 4, 0.18 s, serial: completed", rc == 0, out[-1500:] if rc else "")
+    if rc:
+        return
+    run = os.path.join(case, "parcels_h4")
+    log = os.path.join(run, "log.pimpleDEMFoam")
+    # worked by hand: 175,800 / 4^3 = 2746.9 -> 2747 parcels; cells at most 14 mm wide (280/20)
+    # and 16.7 mm tall (200/12): x 10 + 2 + 10, y 1, z 60 over the bed and 3 in the channel
+    check("2747 parcels of 10 mm packed and coupled", "2747 particles" in open(log).read()
+          and re.search(r"(?m)^variable\s+radius\s+equal\s+0.005\b",
+                        open(os.path.join(run, "DEM", "in.parameters")).read()) is not None)
+    check("1,326 cells (22 x 1 x 60 + 2 x 1 x 3)", "nCells: 1326" in open(os.path.join(run, "log.blockMesh")).read())
+    check_coupling_log("spouted bed", log, 0.2)
+    # the jet: the parcels over the channel rise, those at the side walls stay
+    sys.path.insert(0, os.path.join(TUTORIALS))
+    import particleVtk
+    vtk = sorted(glob.glob(os.path.join(run, "VTK", "particles_*.vtk")),
+                 key=lambda f: int(re.findall(r"_(\d+)\.vtk", f)[0]))
+    x, r, v = particleVtk.read(vtk[-1])
+    over_jet = (np.abs(x[:, 0]) < 0.012) & (x[:, 2] < 0.15)
+    at_walls = np.abs(x[:, 0]) > 0.1
+    rise, still = float(np.mean(v[over_jet, 2])), float(np.mean(np.linalg.norm(v[at_walls], axis=1)))
+    check("the jet: parcels over the channel rise at more than 0.25 m/s and 3 times the speed of those "
+          "by the side walls", rise > 0.25 and rise > 3*still, "(%.3f and %.4f m/s)" % (rise, still))
+    # 2 ranks = serial from the same packing, solvers converged to round-off
+    edit(os.path.join(run, "system", "fvSolution"), r"tolerance 1e-8; relTol [0-9.]+;", "tolerance 1e-14; relTol 0;")
+    edit(os.path.join(run, "system", "controlDict"), r"^endTime\s+\S+;", "endTime 0.03;")
+    runs = {}
+    for ranks in (1, 2):
+        sh("rm -rf 0.[0-9]* [1-9]* processor* VTK postProcessing", run)
+        cmd = ("decomposePar -force > log.decomposePar && timeout 600 mpirun -np 2 pimpleDEMFoam -parallel"
+               if ranks == 2 else "timeout 600 pimpleDEMFoam")
+        rc, text = sh(cmd + " > log.%d 2>&1" % ranks, run, check=False)
+        check("0.03 s on %d rank(s) completed" % ranks, rc == 0, text[-400:] if rc else "")
+        runs[ranks] = coupling_forces(os.path.join(run, "log.%d" % ranks)) if rc == 0 else []
+    same = len(runs[1]) == len(runs[2]) > 100 and all(
+        abs(a - b) <= 1e-7*abs(b) + 1e-12 for s, p in zip(runs[1], runs[2]) for a, b in zip(p[1], s[1]))
+    check("2 ranks = serial: the fluid force on the parcels at all %d couplings to the 8 digits logged, "
+          "each rank holding part of the bed" % len(runs[1]), same and max((p[0] for p in runs[2]), default=2747) < 2747,
+          "(%d and %d couplings)" % (len(runs[1]), len(runs[2])))
+
+
 def test_fluidised_bed():
     print("fluidisedBed tutorial: 10,000 beads in air, 2 s")
     case = copy_tutorial("fluidisedBed", "fluidisedBed")
@@ -989,7 +1035,7 @@ def test_coupling_scale():
 def main():
     checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_lift_virtual_mass, test_restart, test_bed_restart, test_serial_parallel,
                 test_bad_input, test_parcels, test_parcels_2d, test_packed_bed,
-                test_fluidised_bed, test_riser, test_cylinder_bed, test_mueller_bed], sys.argv[1:])
+                test_fluidised_bed, test_riser, test_spouted_bed, test_cylinder_bed, test_mueller_bed], sys.argv[1:])
     return checks.summary("coupling")
 
 

@@ -1,0 +1,111 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
+"""A spouted bed run (run in its folder): the pressure drop at the inlet
+against the bed weight per area of the bed's cross-section, and the
+time-averaged particle speed across the width at H/H0 = 0.15 to 0.80, of
+the particles within one diameter of the front wall (y = 0, where the
+measurement looks) and of all particles (depth-averaged), after the
+start-up. Writes particleSpeed_H<NNN>.csv (x_mm,speed_m_s: the front wall;
+depth_averaged_m_s beside it), spoutedBed.result (the mean absolute
+difference from each measured profile, the spout's width, the fountain's
+height, the pressure drop over the weight, the particle count) and
+spoutedBed.png (a snapshot coloured by speed, the profiles with the
+measured points)."""
+import glob
+import os
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+PROJECT = os.environ.get("VFM_PROJECT_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
+sys.path[:0] = [os.path.join(PROJECT, "tutorials"), os.path.join(PROJECT, "tutorials", "fluidisedBed")]
+import caseProperties  # noqa: E402
+from bedData import bed_weight, pressure_drop, read_vtk, snapshots  # noqa: E402
+
+START_UP = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
+H0 = 0.2                    # m, the settled bed (Yue et al. 2020)
+HEIGHTS = (0.15, 0.30, 0.45, 0.60, 0.75, 0.80)
+BIN = 0.01                  # m, across the width
+MEASURED = os.path.join(os.path.dirname(os.path.abspath(__file__)), "measured")
+
+box = caseProperties.dem_parameters(".")
+half, depth = box["halfWidth"], box["depth"]
+d = caseProperties.particle_diameter(".")
+dt = caseProperties._entry("system/controlDict", "deltaT")
+weight = bed_weight(".", 2*half*depth)
+t, dp = pressure_drop(".")
+late = t > START_UP
+result = {"dp_vs_weight": float(np.mean(dp[late])/weight) if late.any() else float("nan")}
+
+edges = np.arange(-half, half + 1e-9, BIN)
+centres = 0.5*(edges[1:] + edges[:-1])
+sums = {(h, where): np.zeros(len(centres)) for h in HEIGHTS for where in ("front", "depth")}
+counts = {key: np.zeros(len(centres)) for key in sums}
+files = [(int(f.rsplit("_", 1)[1].split(".")[0])*dt, f) for f in snapshots(".")]
+used = [f for s, f in files if s > START_UP]
+fountain = []
+for f in used:
+    x, r, v = read_vtk(f)
+    speed = np.linalg.norm(v, axis=1)
+    for h in HEIGHTS:
+        layer = np.abs(x[:, 2] - h*H0) < d
+        for where, pick in (("front", layer & (x[:, 1] < r + d)), ("depth", layer)):
+            k = np.clip(np.digitize(x[pick, 0], edges) - 1, 0, len(centres) - 1)
+            np.add.at(sums[(h, where)], k, speed[pick])
+            np.add.at(counts[(h, where)], k, 1)
+    # the fountain: the height below which 99 % of the particles over the inlet lie
+    core = np.abs(x[:, 0]) < 0.012
+    fountain.append(np.quantile(x[core, 2], 0.99) if core.any() else np.nan)
+profiles = {key: np.where(counts[key] > 0, sums[key]/np.maximum(counts[key], 1), np.nan) for key in sums}
+for h in HEIGHTS:
+    with open("particleSpeed_H%03d.csv" % round(100*h), "w") as out:
+        out.write("x_mm,speed_m_s,depth_averaged_m_s\n")
+        for c, front, deep in zip(centres, profiles[(h, "front")], profiles[(h, "depth")]):
+            out.write("%.1f,%.5f,%.5f\n" % (1000*c, front, deep))
+measured = {}
+for h in (0.15, 0.45, 0.75):
+    m = np.loadtxt(os.path.join(MEASURED, "particleSpeed_H%03d.csv" % round(100*h)), delimiter=",", skiprows=1)
+    measured[h] = m
+    sim = np.interp(m[:, 0]/1000, centres, profiles[(h, "front")])
+    result["mad_h%03d" % round(100*h)] = float(np.nanmean(np.abs(sim - m[:, 1])))
+# the spout: where the front-wall speed at H/H0 = 0.45 exceeds half its peak
+mid = profiles[(0.45, "front")]
+if np.isfinite(mid).any():
+    fast = centres[mid > 0.5*np.nanmax(mid)]
+    result["spout_width_mm"] = float(1000*(fast.max() - fast.min() + BIN))
+result["fountain_mm"] = float(1000*np.nanmean(fountain)) if fountain else float("nan")
+result["snapshots"] = len(used)
+with open("spoutedBed.result", "w") as out:
+    for k, v in result.items():
+        out.write("%s %.6g\n" % (k, v))
+print("    after t = %g s (%d snapshots): pressure drop / bed weight %.3f; mean |front-wall speed - measured| "
+      "%.3f, %.3f, %.3f m/s at H/H0 = 0.15, 0.45, 0.75; spout %.0f mm wide, fountain %.0f mm"
+      % (START_UP, len(used), result["dp_vs_weight"], result.get("mad_h015", np.nan), result.get("mad_h045", np.nan),
+         result.get("mad_h075", np.nan), result.get("spout_width_mm", np.nan), result["fountain_mm"]))
+
+fig, axes = plt.subplots(1, 4, figsize=(15, 5), gridspec_kw=dict(width_ratios=[1.1, 1, 1, 1]))
+if files:
+    x, r, v = read_vtk(files[-1][1])
+    speed = np.linalg.norm(v, axis=1)
+    sc = axes[0].scatter(1000*x[:, 0], 1000*x[:, 2], s=2, c=speed, cmap="viridis", vmin=0, vmax=2)
+    fig.colorbar(sc, ax=axes[0], label="particle speed [m/s]")
+    axes[0].set_title("t = %.2f s, side view" % files[-1][0], fontsize=9)
+axes[0].set_xlim(-140, 140)
+axes[0].set_ylim(-40, 600)
+axes[0].set_aspect("equal")
+axes[0].set_xlabel("x [mm]")
+axes[0].set_ylabel("z [mm]")
+for ax, h in zip(axes[1:], (0.15, 0.45, 0.75)):
+    ax.plot(1000*centres, profiles[(h, "front")], label="front wall (within one diameter)")
+    ax.plot(1000*centres, profiles[(h, "depth")], ls="--", label="depth-averaged")
+    ax.plot(measured[h][:, 0], measured[h][:, 1], "ko", ms=3, label="Yue et al. 2020 (PIV)")
+    ax.set_title("H/H0 = %.2f: mean abs. difference %.3f m/s" % (h, result["mad_h%03d" % round(100*h)]), fontsize=9)
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("time-averaged particle speed [m/s]")
+    ax.legend(fontsize=7)
+fig.tight_layout()
+fig.savefig("spoutedBed.png", dpi=110)
+print("    plot spoutedBed.png, profiles particleSpeed_H*.csv")

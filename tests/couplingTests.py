@@ -992,10 +992,12 @@ def test_coupling_scale():
     check("series.csv: a row per rank count with the required columns",
           len(series) == 2 and all(c in series[0] and series[0][c] for c in wanted), str(list(series[0])))
     for row in series:
-        stages = sum(float(row[c]) for c in wanted[4:9])
+        # each stage takes part of every coupling's wall time, so its median is at most the
+        # wall time's (medians do not add: their sum may exceed it)
+        slowest = max(float(row[c]) for c in wanted[4:9])
         total = float(row["total_ms"])
         check("%s ranks: no stage median exceeds the wall time between couplings" % row["ranks"],
-              stages <= 1.01*total, "(%.2f of %.2f ms)" % (stages, total))
+              slowest <= 1.01*total, "(slowest %.2f of %.2f ms)" % (slowest, total))
         # summed over the couplings, the timed stages are the wall time but for the untimed rest
         share = json.load(open(os.path.join(work, "1e4_%s" % row["ranks"], "result_1.json"))).get("stage_share", 0)
         check("%s ranks: the stages take 85 %% to 101 %% of the wall time, summed over the couplings"

@@ -3,7 +3,9 @@
 """The documentation against itself and the files it names: every relative
 link in README.md and docs/ reaches a file (and, with '#', a heading of
 it), and every number README.md states as a result is written in the same
-words in docs/, where the command that remakes it is given."""
+words in docs/, where the command that remakes it is given; every result
+table in docs/ equals the committed results it is written from, and those
+results equal the runs' records they summarise."""
 import glob
 import os
 import re
@@ -73,8 +75,58 @@ def test_readme_results_in_docs():
         check("README result '%s' is written in docs/" % n, n in docs)
 
 
+def test_result_tables():
+    print("docs/ result tables against their committed sources (docs/tables.py)")
+    sys.path.insert(0, os.path.join(ROOT, "docs"))
+    import tables
+    blocks, problems = tables.process(write=False)
+    check("generated tables found (the check sees them)", blocks >= 9, "(%d)" % blocks)
+    for p in problems:
+        check(p, False)
+    check("every generated table equals its source", not problems, "(%d of %d differ)" % (len(problems), blocks))
+    # a wrong source must be caught: one changed cell makes a table differ
+    source = os.path.join(ROOT, "benchmarks", "spoutedBed", "results", "summary.csv")
+    original = open(source).read()
+    try:
+        open(source, "w").write(original.replace(",", ",9", 1))
+        check("a changed results file is caught", len(tables.process(write=False)[1]) == len(problems) + 1)
+    finally:
+        open(source, "w").write(original)
+
+
+def test_coarse_bed_tables_from_runs():
+    print("the coarse-grained bed's table.md files written from its runs' records")
+    sys.path.insert(0, os.path.join(ROOT, "benchmarks", "coarseGrainedBed"))
+    import study
+    umf = study.wen_yu_umf()
+    for bed in sorted(study.BEDS):
+        where, _ = study.bed_dirs(bed, study.RESULTS)
+        runs = study.finished(where)
+        check("%s bed: runs recorded" % bed, len(runs) >= 10, "(%d)" % len(runs))
+        table = open(os.path.join(where, "table.md")).read()
+        check("%s bed: table.md is its runs' table" % bed, study.table_text(study.compare(runs, umf), umf) == table)
+
+
+def test_spouted_bed_summary_from_results():
+    print("the spouted bed's summary.csv rows against each run's recorded .result")
+    import csv
+    results = os.path.join(ROOT, "benchmarks", "spoutedBed", "results")
+    rows = list(csv.DictReader(open(os.path.join(results, "summary.csv"))))
+    check("summary rows found", len(rows) >= 1, "(%d)" % len(rows))
+    for row in rows:
+        path = os.path.join(results, "%s_h%s" % (row["model"], row["h"]), "spoutedBed.result")
+        check("%s h = %s has its .result" % (row["model"], row["h"]), os.path.isfile(path))
+        if not os.path.isfile(path):
+            continue
+        result = {k: float(v) for k, v in (l.split() for l in open(path))}
+        for key in ("mad_h015", "mad_h045", "mad_h075", "spout_width_mm", "fountain_mm", "dp_vs_weight"):
+            check("%s h = %s: %s %s is the .result's %g" % (row["model"], row["h"], key, row[key], result[key]),
+                  abs(float(row[key]) - result[key]) <= 5e-4*abs(result[key]))
+
+
 def main():
-    checks.run([test_links, test_readme_results_in_docs], sys.argv[1:])
+    checks.run([test_links, test_readme_results_in_docs, test_result_tables, test_coarse_bed_tables_from_runs,
+                test_spouted_bed_summary_from_results], sys.argv[1:])
     return checks.summary("docs")
 
 

@@ -365,7 +365,8 @@ def report(results):
             f.write(",".join(row) + "\n")
 
 
-def write_table(rows, umf_ref, where):
+def table_text(rows, umf_ref):
+    """table.md of a bed: its bubbling runs, then its ramp runs"""
     lines = ["| model | h | law | mesh | dp / bed weight - 1 (halves) | dp vs fine | fluctuation | bed height (mm) "
              "| mean abs. alpha vs fine | s per simulated s | speed-up |", "|---" * 11 + "|"]
     for r in (x for x in rows if x["test"] == "bubbling"):
@@ -385,7 +386,11 @@ def write_table(rows, umf_ref, where):
             lines.append("| %s | %g | %s | %s | %.3f | %s | %+.1f %% | %.0f | %s |"
                          % (r["model"], r["h"], r["law"], r["mesh"], r["umf"], vs_fine,
                             100 * r["umf_vs_wen_yu"], r["wall_per_s"], speedup))
-    text = "\n".join(lines) + "\n"
+    return "\n".join(lines) + "\n"
+
+
+def write_table(rows, umf_ref, where):
+    text = table_text(rows, umf_ref)
     with open(os.path.join(where, "table.md"), "w") as f:
         f.write(text)
     print(text)

@@ -6,7 +6,8 @@ file in results/<model>_h<h>/, and its row in results/summary.csv
 (model,h,cells,particles,mad_h015,mad_h045,mad_h075,spout_width_mm,
 fountain_mm,dp_vs_weight,wall_s_per_sim_s), replacing an earlier row of the
 same model and h. The wall-clock time is the solver's own (ExecutionTime at
-its last step) over the simulated time.
+the last step of each log.pimpleDEMFoam*, one per stretch of a continued
+run) over the simulated time those stretches covered.
 
 usage: record.py RUN_DIR"""
 import csv
@@ -22,6 +23,19 @@ COLUMNS = ("model", "h", "cells", "particles", "mad_h015", "mad_h045", "mad_h075
            "fountain_mm", "dp_vs_weight", "wall_s_per_sim_s")
 
 
+def wall_seconds(run):
+    """Wall-clock seconds and simulated seconds over every stretch's log."""
+    wall = simulated = 0.0
+    for log in glob.glob(os.path.join(run, "log.pimpleDEMFoam*")):
+        text = open(log).read()
+        times = [float(t) for t in re.findall(r"(?m)^Time = (\S+)", text)]
+        execution = re.findall(r"ExecutionTime = (\S+) s", text)
+        if times and execution:
+            wall += float(execution[-1])
+            simulated += times[-1] - times[0]
+    return wall, simulated
+
+
 def main():
     if len(sys.argv) != 2 or not os.path.isfile(os.path.join(sys.argv[1], "spoutedBed.result")):
         sys.exit("record.py: give a spoutedBed run folder holding spoutedBed.result (run plotSpoutedBed.py first)")
@@ -32,12 +46,11 @@ def main():
     factor = re.search(r"coarseGraining\s*\{\s*factor\s+(\S+);", coupling)
     h = float(factor.group(1)) if factor else 1.0
     log = open(os.path.join(run, "log.pimpleDEMFoam")).read()
-    times = re.findall(r"(?m)^Time = (\S+)", log)
-    wall = re.findall(r"ExecutionTime = (\S+) s", log)
+    wall, simulated = wall_seconds(run)
     cells = int(re.search(r"nCells: (\d+)", open(os.path.join(run, "log.blockMesh")).read()).group(1))
     particles = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", log).group(1))
     row = dict(model=model, h="%g" % h, cells=cells, particles=particles,
-               wall_s_per_sim_s="%.1f" % (float(wall[-1])/float(times[-1])))
+               wall_s_per_sim_s="%.1f" % (wall/simulated))
     for key in COLUMNS[4:-1]:
         row[key] = "%.4g" % result[key]
     where = os.path.join(RESULTS, "%s_h%g" % (model, h))

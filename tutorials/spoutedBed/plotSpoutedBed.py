@@ -40,26 +40,35 @@ t, dp = pressure_drop(".")
 late = t > START_UP
 result = {"dp_vs_weight": float(np.mean(dp[late])/weight) if late.any() else float("nan")}
 
-edges = np.arange(-half, half + 1e-9, BIN)
-centres = 0.5*(edges[1:] + edges[:-1])
-sums = {(h, where): np.zeros(len(centres)) for h in HEIGHTS for where in ("front", "depth")}
-counts = {key: np.zeros(len(centres)) for key in sums}
 files = [(int(f.rsplit("_", 1)[1].split(".")[0])*dt, f) for f in snapshots(".")]
 used = [f for s, f in files if s > START_UP]
-fountain = []
-for f in used:
-    x, r, v = read_vtk(f)
-    speed = np.linalg.norm(v, axis=1)
-    for h in HEIGHTS:
-        layer = np.abs(x[:, 2] - h*H0) < d
-        for where, pick in (("front", layer & (x[:, 1] < r + d)), ("depth", layer)):
-            k = np.clip(np.digitize(x[pick, 0], edges) - 1, 0, len(centres) - 1)
-            np.add.at(sums[(h, where)], k, speed[pick])
-            np.add.at(counts[(h, where)], k, 1)
-    # the fountain: the height below which 99 % of the particles over the inlet lie
-    core = np.abs(x[:, 0]) < 0.012
-    fountain.append(np.quantile(x[core, 2], 0.99) if core.any() else np.nan)
-profiles = {key: np.where(counts[key] > 0, sums[key]/np.maximum(counts[key], 1), np.nan) for key in sums}
+
+
+def averaged(snaps):
+    """Time-averaged speed profiles {(H/H0, 'front' or 'depth'): per bin} of
+    the snapshots, and the fountain height of each."""
+    sums = {(h, where): np.zeros(len(centres)) for h in HEIGHTS for where in ("front", "depth")}
+    counts = {key: np.zeros(len(centres)) for key in sums}
+    tops = []
+    for f in snaps:
+        x, r, v = read_vtk(f)
+        speed = np.linalg.norm(v, axis=1)
+        for h in HEIGHTS:
+            layer = np.abs(x[:, 2] - h*H0) < d
+            for where, pick in (("front", layer & (x[:, 1] < r + d)), ("depth", layer)):
+                k = np.clip(np.digitize(x[pick, 0], edges) - 1, 0, len(centres) - 1)
+                np.add.at(sums[(h, where)], k, speed[pick])
+                np.add.at(counts[(h, where)], k, 1)
+        # the fountain: the height below which 99 % of the particles over the inlet lie
+        core = np.abs(x[:, 0]) < 0.012
+        tops.append(np.quantile(x[core, 2], 0.99) if core.any() else np.nan)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return {key: np.where(counts[key] > 0, sums[key]/np.maximum(counts[key], 1), np.nan) for key in sums}, tops
+
+
+edges = np.arange(-half, half + 1e-9, BIN)
+centres = 0.5*(edges[1:] + edges[:-1])
+profiles, fountain = averaged(used)
 for h in HEIGHTS:
     with open("particleSpeed_H%03d.csv" % round(100*h), "w") as out:
         out.write("x_mm,speed_m_s,depth_averaged_m_s\n")
@@ -77,14 +86,24 @@ if np.isfinite(mid).any():
     fast = centres[mid > 0.5*np.nanmax(mid)]
     result["spout_width_mm"] = float(1000*(fast.max() - fast.min() + BIN))
 result["fountain_mm"] = float(1000*np.nanmean(fountain)) if fountain else float("nan")
+# statistics: the front-wall profiles of the averaging window's two halves, their mean
+# absolute difference over the six heights in the spout (the channel's 24 mm) and the annulus
+if len(used) >= 4:
+    first, _ = averaged(used[:len(used)//2])
+    second, _ = averaged(used[len(used)//2:])
+    spout = np.abs(centres) < 0.012
+    for name, where in (("spout", spout), ("annulus", ~spout)):
+        gap = np.concatenate([np.abs(first[(h, "front")] - second[(h, "front")])[where] for h in HEIGHTS])
+        result["halves_%s_m_s" % name] = float(np.nanmean(gap))
 result["snapshots"] = len(used)
 with open("spoutedBed.result", "w") as out:
     for k, v in result.items():
         out.write("%s %.6g\n" % (k, v))
 print("    after t = %g s (%d snapshots): pressure drop / bed weight %.3f; mean |front-wall speed - measured| "
-      "%.3f, %.3f, %.3f m/s at H/H0 = 0.15, 0.45, 0.75; spout %.0f mm wide, fountain %.0f mm"
+      "%.3f, %.3f, %.3f m/s at H/H0 = 0.15, 0.45, 0.75; spout %.0f mm wide, fountain %.0f mm; halves differ by %.3f m/s (spout), %.3f m/s (annulus)"
       % (START_UP, len(used), result["dp_vs_weight"], result.get("mad_h015", np.nan), result.get("mad_h045", np.nan),
-         result.get("mad_h075", np.nan), result.get("spout_width_mm", np.nan), result["fountain_mm"]))
+         result.get("mad_h075", np.nan), result.get("spout_width_mm", np.nan), result["fountain_mm"],
+         result.get("halves_spout_m_s", np.nan), result.get("halves_annulus_m_s", np.nan)))
 
 fig, axes = plt.subplots(1, 4, figsize=(15, 5), gridspec_kw=dict(width_ratios=[1.1, 1, 1, 1]))
 if files:

@@ -86,12 +86,12 @@ def test_result_tables():
     check("every generated table equals its source", not problems, "(%d of %d differ)" % (len(problems), blocks))
     # a wrong source must be caught: one changed cell makes a table differ
     source = os.path.join(ROOT, "benchmarks", "spoutedBed", "results", "summary.csv")
-    original = open(source).read()
+    original = open(source, "rb").read()
     try:
-        open(source, "w").write(original.replace(",", ",9", 1))
+        open(source, "wb").write(original.replace(b",", b",9", 1))
         check("a changed results file is caught", len(tables.process(write=False)[1]) == len(problems) + 1)
     finally:
-        open(source, "w").write(original)
+        open(source, "wb").write(original)
 
 
 def test_coarse_bed_tables_from_runs():

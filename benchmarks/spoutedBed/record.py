@@ -63,7 +63,7 @@ def main():
     rows = [r for r in rows if (r["model"], r["h"]) != (row["model"], row["h"])] + [row]
     rows.sort(key=lambda r: (float(r["h"]), r["model"]))
     with open(summary, "w", newline="") as out:
-        w = csv.DictWriter(out, fieldnames=COLUMNS)
+        w = csv.DictWriter(out, fieldnames=COLUMNS, lineterminator="\n")
         w.writeheader()
         w.writerows(rows)
     print("record.py: %s h = %g in %s and summary.csv" % (model, h, os.path.relpath(where, HERE)))

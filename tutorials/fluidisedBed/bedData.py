@@ -29,8 +29,17 @@ def snapshots(case):
     return sorted(files, key=lambda f: int(re.findall(r"_(\d+)\.vtk", f)[0]))
 
 
+def _inlet_files(case):
+    """the inlet pressure files, one per start of the run (a continued run starts another)"""
+    top = os.path.join(case, "postProcessing", "inletPressure")
+    starts = sorted((d for d in os.listdir(top) if re.fullmatch(r"[0-9.eE+-]+", d)), key=float) \
+        if os.path.isdir(top) else []
+    return [os.path.join(top, d, "surfaceFieldValue.dat") for d in starts] or \
+        [os.path.join(top, "0", "surfaceFieldValue.dat")]
+
+
 def _inlet_data(case):
-    return os.path.join(case, "postProcessing", "inletPressure", "0", "surfaceFieldValue.dat")
+    return _inlet_files(case)[0]
 
 
 def inlet_area(case):
@@ -52,7 +61,11 @@ def bed_weight(case, area=None):
 
 
 def pressure_drop(case):
-    data = np.loadtxt(_inlet_data(case))
+    """(time, inlet pressure) over every start of the run: each file up to where the next
+    one starts (a continued run repeats the times after its last written time)"""
+    parts = [np.loadtxt(f, ndmin=2) for f in _inlet_files(case)]
+    kept = [p[p[:, 0] <= q[0, 0]] if len(q) else p for p, q in zip(parts[:-1], parts[1:])] + parts[-1:]
+    data = np.concatenate(kept)
     return data[:, 0], RHO_F*data[:, 1]
 
 

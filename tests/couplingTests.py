@@ -21,10 +21,11 @@ from scipy.optimize import brentq
 import checks
 from checks import WORK, check, near
 from foamCase import ROOT, set_dem, sh
+import snappyColumn
 
 TUTORIALS = os.path.join(ROOT, "tutorials")
 sys.path.insert(0, TUTORIALS)
-import particleVtk  # noqa: E402
+import particleVtk
 
 
 def copy_tutorial(name, dest):
@@ -462,9 +463,10 @@ def sphere_slab_volume(z, r, lo, hi):
     return float(np.sum(below(hi) - below(lo)))
 
 
-def fixed_bed_gradient(bed, dest, grading, u0=0.25, z_lo=0.0045, z_hi=0.0165):
+def fixed_bed_gradient(bed, dest, grading, u0=0.25, z_lo=0.0045, z_hi=0.0165, snappy=False):
     """The packed bed of the cylinderBed case bed, frozen (no DEM integration, velocities 0),
-    in a copy dest meshed with the z grading given, under a superficial velocity u0: the
+    in a copy dest meshed with the z grading given (or by snappyHexMesh: cubic cells of 3 mm
+    cut to the column, split once at its wall), under a superficial velocity u0: the
     pressure gradient between two points on the axis against Ergun's for the porosity of the
     spheres between them (Gidaspow's drag is Ergun's below a void fraction of 0.8).
     Returns (gradient, Ergun's gradient, porosity)."""
@@ -487,9 +489,16 @@ def fixed_bed_gradient(bed, dest, grading, u0=0.25, z_lo=0.0045, z_hi=0.0165):
     edit(control, r"^functions\s*\n\{", "functions\n{\n    bedProbes\n    {\n        type probes; libs (\"libsampling.so\");\n"
          "        fields (p); interpolationScheme cellPoint;\n"
          "        probeLocations ( (0 0 %g) (0 0 %g) );\n        writeControl timeStep; writeInterval 10;\n    }" % (z_lo, z_hi))
-    rc, out = sh("rm -rf 0 && cp -r 0.orig 0 && blockMesh > log.blockMesh && pimpleDEMFoam > log.pimpleDEMFoam 2>&1",
-                 case, check=False)
-    check("fixed bed, z grading %g: run completed" % grading, rc == 0, out[-800:] if rc else "")
+    if snappy:
+        rc, out = snappyColumn.mesh_column(case, 0.015, -0.006, 0.12, 0.003)
+        check("snappyHexMesh column: meshed, checkMesh OK", rc == 0 and
+              "Mesh OK." in open(os.path.join(case, "log.checkMesh")).read(), out[-800:] if rc else "")
+        if rc:
+            return None
+    mesh = "" if snappy else "blockMesh > log.blockMesh && "
+    rc, out = sh("rm -rf 0 && cp -r 0.orig 0 && %spimpleDEMFoam > log.pimpleDEMFoam 2>&1" % mesh, case, check=False)
+    check("fixed bed, %s: run completed" % ("snappyHexMesh" if snappy else "z grading %g" % grading), rc == 0,
+          out[-800:] if rc else "")
     if rc:
         return None
     x, r, _ = particleVtk.read(os.path.join(case, "VTK", "particles_400.vtk"))
@@ -531,13 +540,14 @@ def test_cylinder_bed():
         check("vertical fluid force on the bed, 2 ranks = 1 rank", diff < 1e-6,
               "(largest relative difference %.1e)" % diff)
 
-    print("  the frozen packed bed in the column (uniform and z-graded O-grids) against Ergun")
-    for grading in (1, 4):
-        found = fixed_bed_gradient(case, "cylinder-fixed-%g" % grading, grading)
+    print("  the frozen packed bed in the column (uniform and z-graded O-grids, snappyHexMesh) against Ergun")
+    for grading, snappy in ((1, False), (4, False), (1, True)):
+        found = fixed_bed_gradient(case, "cylinder-fixed-%s" % ("snappy" if snappy else grading), grading,
+                                   snappy=snappy)
         if found:
             gradient, ergun, eps = found
-            near("z grading %g: pressure gradient inside the bed / Ergun (porosity %.3f)" % (grading, eps),
-                 gradient/ergun, 1, 0.10)
+            near("%s: pressure gradient inside the bed / Ergun (porosity %.3f)"
+                 % ("snappyHexMesh" if snappy else "O-grid, z grading %g" % grading, eps), gradient/ergun, 1, 0.10)
 
 
 def test_riser():

@@ -26,6 +26,7 @@ import snappyColumn
 TUTORIALS = os.path.join(ROOT, "tutorials")
 sys.path.insert(0, TUTORIALS)
 import particleVtk
+import weightShares
 
 
 def copy_tutorial(name, dest):
@@ -528,6 +529,12 @@ def test_cylinder_bed():
     log2 = os.path.join(case, "log.2ranks")
     shutil.copy(os.path.join(case, "log.pimpleDEMFoam"), log2)
     check_coupling_log("cylinderBed, 2 ranks", log2, 0.2)
+    # Newton for the bed at rest, before the gas lifts it: the walls' measured contact
+    # forces and the fluid's force carry the beads' weight (the first 5 ms of the ramp)
+    shares = weightShares.weight_shares(case, 0, 0.005)
+    check("at rest (t <= 5 ms): fluid + distributor + column wall forces = the beads' weight",
+          shares is not None and abs(sum(shares) - 1) < 0.02,
+          "(%s)" % (", ".join("%.4f" % x for x in shares) if shares else "no wall forces written"))
     decomposition = open(os.path.join(case, "log.decomposePar")).read()
     check("decomposed by scotch", "scotch" in decomposition)
     rc, out = sh("./Allrun analytical 0.02 1", case, check=False)

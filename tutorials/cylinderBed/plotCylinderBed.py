@@ -3,7 +3,11 @@
 """Bubbling bed in the cylindrical column: the inlet pressure drop against
 time beside the bed weight per area of the mesh's inlet, and side views of
 the beads; prints the time-averaged pressure drop after the start-up
-(t > 0.3 s) and writes cylinderBed.png and cylinderBed.result."""
+(t > 0.3 s) and where the beads' weight rests over the same time: the
+fluid's vertical force on them (the solver's log), the distributor's and
+the column wall's contact forces (DEM/post/wallForces.txt), each over the
+beads' weight, and their sum (Newton: 1 for a bed that does not accelerate
+on average). Writes cylinderBed.png and cylinderBed.result."""
 import os
 import re
 import sys
@@ -17,8 +21,11 @@ import numpy as np
 PROJECT = os.environ.get("VFM_PROJECT_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
 sys.path[:0] = [os.path.join(PROJECT, "tutorials"), os.path.join(PROJECT, "tutorials", "fluidisedBed")]
 from bedData import bed_weight, inlet_area, pressure_drop, pressure_panel, read_vtk, snapshots  # noqa: E402
+from weightShares import weight_shares  # noqa: E402
 
 START_UP = 0.3
+
+
 weight = bed_weight(".", inlet_area("."))
 t, dp = pressure_drop(".")
 settled = t > START_UP
@@ -35,6 +42,11 @@ print(f"{model}: time-averaged pressure drop (t > {START_UP} s) {mean:.1f} Pa, b
       f"{weight:.1f} Pa ({100*(mean/weight - 1):+.1f} %)")
 with open("cylinderBed.result", "w") as f:
     f.write(f"dp_error {abs(mean/weight - 1)}\nweight_per_area {weight}\nmean_dp {mean}\n")
+    shares = weight_shares(".", START_UP)
+    if shares:
+        print("    where the beads' weight rests (t > %g s): fluid %.3f, distributor %.3f, column wall %.3f; "
+              "sum %.3f" % ((START_UP,) + shares + (sum(shares),)))
+        f.write("fluid_share %.6g\ndistributor_share %.6g\ncolumn_share %.6g\n" % shares)
 
 files = snapshots(".")[-3:]
 fig = plt.figure(figsize=(10, 4.6))

@@ -66,7 +66,9 @@ def run(build, ranks):
         m = LINE.match(line)
         if m:
             times.append([float(m.group(i)) for i in range(1, 6)])
-            results.append(re.sub(r"seconds.*?; alpha", "alpha", line))
+            # the results without the timings (the stages' and the wall clock's)
+            results.append(re.sub(r"; wall seconds since the last coupling \S+", "",
+                                  re.sub(r"seconds.*?; alpha", "alpha", line)))
     if len(times) < 20:
         sys.exit("pairedCoupling: only %d coupling lines in %s" % (len(times), log))
     return times[len(times)//10:], results

@@ -306,6 +306,17 @@ void Foam::liggghtsCoupling::run(const label nSteps)
 }
 
 
+void Foam::liggghtsCoupling::deleteParticles(const labelUList& ids)
+{
+    if (ids.empty()) return;
+    string list;
+    for (const label id : ids) list += " " + Foam::name(id);
+    command("group vfmDelete id" + list);
+    command("delete_atoms group vfmDelete");
+    command("group vfmDelete delete");
+}
+
+
 Foam::labelList Foam::liggghtsCoupling::idOrder() const
 {
     LAMMPS_NS::Atom& atom = *lmp_->atom;

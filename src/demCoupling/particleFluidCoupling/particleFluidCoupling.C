@@ -8,6 +8,7 @@
 #include "readChoice.H"
 #include "fvc.H"
 #include "OFstream.H"
+#include "StringStream.H"
 #include "zeroGradientFvPatchFields.H"
 #include "ListListOps.H"
 #include "UIndirectList.H"
@@ -314,24 +315,21 @@ void Foam::particleFluidCoupling::handleOutside()
     outside[Pstream::myProcNo()] = mine;
     Pstream::gatherList(outside);
     Pstream::scatterList(outside);
-    string ids;
-    for (const labelList& l : outside)
-    {
-        for (const label id : l) ids += " " + Foam::name(id);
-    }
+    const labelList ids(ListListOps::combine<labelList>(outside, accessOp<labelList>()));
     if (!removeOutside_)
     {
+        OStringStream first;
+        for (label i = 0; i < min(ids.size(), label(20)); ++i) first << " " << ids[i];
         FatalErrorInFunction
             << nOutside << " particles have left the mesh at time "
-            << mesh_.time().timeName() << " (ids" << ids.substr(0, 200)
+            << mesh_.time().timeName() << " (ids" << first.str().c_str()
+            << (ids.size() > 20 ? " ..." : "")
             << "); set particlesOutside remove in couplingProperties to"
             << " delete them from the DEM instead" << exit(FatalError);
     }
     Info<< "particleFluidCoupling: removing " << nOutside
         << " particles that left the mesh from the DEM" << endl;
-    dem_->command("group vfmOutside id" + ids);
-    dem_->command("delete_atoms group vfmOutside");
-    dem_->command("group vfmOutside delete");
+    dem_->deleteParticles(ids);
 }
 
 
@@ -383,68 +381,7 @@ void Foam::particleFluidCoupling::beginStep
         dem_->run(demStepsPerCoupling_);
         timeDem_ += clock_.timeIncrement();
         mapParticles();
-
-        // drag coefficients from the fluid state at each particle, spread
-        // to the cells as the implicit coefficient and its explicit part
-        const label n = particles_.size();
-        const scalarField& volumes = voidFraction_->particleVolumes();
-        voidFraction_->weightSums(weightSum_);
-        const vectorField& v = particles_.velocities();
-        const scalar mu = rho_*nu;
-        beta_.setSize(n);
-        scalarField cellBeta;
-        vectorField cellBetaV;
-        voidFraction_->gatherApplySpread
-        (
-            voidFraction_->voidFraction().primitiveField(), U.primitiveField(),
-            cellBeta, cellBetaV,
-            [&](const label i, const scalar alphaP, const vector& Up, scalar& b, vector& bv)
-            {
-                const scalar s = weightSum_[i];
-                scalar& beta = beta_[i];
-                if (s <= SMALL)
-                {
-                    beta = 0;
-                }
-                else
-                {
-                    const scalar a = alphaP/s;
-                    const label type = particles_.type(i);
-                    // a parcel: the law for one of its particles, scaled
-                    beta = parcels_.dragFactor(type)*drag_->beta
-                    (
-                        {
-                            parcels_.particleDiameter(2*particles_.radii()[i], type),
-                            parcels_.particleVolume(volumes[i], type),
-                            a, mag(Up/s - v[i]), rho_, mu
-                        }
-                    );
-                    if (formulation_ == formulation::B) beta /= a;
-                }
-                b = beta;
-                bv = beta*v[i];
-            }
-        );
-        if (liftAndVirtualMass_.virtualMass())
-        {
-            // in the order mapParticles read the particles in
-            const scalar interval = demStepsPerCoupling_*dem_->timeStep();
-            accelerations_ = dem_->meanAccelerations(interval, !Pstream::parRun());
-            voidFraction_->holders().toHeld(accelerations_);
-        }
-        if (liftAndVirtualMass_.active())
-        {
-            vectorField cellForce;
-            addLiftAndVirtualMass(U, nu, cellForce);
-            cellBetaV -= cellForce;
-        }
-        const scalarField& V = mesh_.V();
-        // the equations read the cell values only: the boundaries (and
-        // their processor exchange) wait for a write time, see endStep
-        Ksl_.primitiveFieldRef() = cellBeta/(rho_*V);
-        explicitSource_.primitiveFieldRef() = cellBetaV/(rho_*V);
-        forceSum_ = vectorField(n, Zero);
-        timeForces_ += clock_.timeIncrement();
+        setMomentumExchange(U, nu);
     }
 
     ++fluidStep_;
@@ -453,6 +390,76 @@ void Foam::particleFluidCoupling::beginStep
         (1 - f)*alphaStart_ + f*voidFraction_->voidFraction().primitiveField();
     alpha_.correctBoundaryConditions();
     clock_.timeIncrement();
+}
+
+
+void Foam::particleFluidCoupling::setMomentumExchange
+(
+    const volVectorField& U,
+    const scalar nu
+)
+{
+    // drag coefficients from the fluid state at each particle, spread
+    // to the cells as the implicit coefficient and its explicit part
+    const label n = particles_.size();
+    const scalarField& volumes = voidFraction_->particleVolumes();
+    voidFraction_->weightSums(weightSum_);
+    const vectorField& v = particles_.velocities();
+    const scalar mu = rho_*nu;
+    beta_.setSize(n);
+    scalarField cellBeta;
+    vectorField cellBetaV;
+    voidFraction_->gatherApplySpread
+    (
+        voidFraction_->voidFraction().primitiveField(), U.primitiveField(),
+        cellBeta, cellBetaV,
+        [&](const label i, const scalar alphaP, const vector& Up, scalar& b, vector& bv)
+        {
+            const scalar s = weightSum_[i];
+            scalar& beta = beta_[i];
+            if (s <= SMALL)
+            {
+                beta = 0;
+            }
+            else
+            {
+                const scalar a = alphaP/s;
+                const label type = particles_.type(i);
+                // a parcel: the law for one of its particles, scaled
+                beta = parcels_.dragFactor(type)*drag_->beta
+                (
+                    {
+                        parcels_.particleDiameter(2*particles_.radii()[i], type),
+                        parcels_.particleVolume(volumes[i], type),
+                        a, mag(Up/s - v[i]), rho_, mu
+                    }
+                );
+                if (formulation_ == formulation::B) beta /= a;
+            }
+            b = beta;
+            bv = beta*v[i];
+        }
+    );
+    if (liftAndVirtualMass_.virtualMass())
+    {
+        // in the order mapParticles read the particles in
+        const scalar interval = demStepsPerCoupling_*dem_->timeStep();
+        accelerations_ = dem_->meanAccelerations(interval, !Pstream::parRun());
+        voidFraction_->holders().toHeld(accelerations_);
+    }
+    if (liftAndVirtualMass_.active())
+    {
+        vectorField cellForce;
+        addLiftAndVirtualMass(U, nu, cellForce);
+        cellBetaV -= cellForce;
+    }
+    const scalarField& V = mesh_.V();
+    // the equations read the cell values only: the boundaries (and
+    // their processor exchange) wait for a write time, see endStep
+    Ksl_.primitiveFieldRef() = cellBeta/(rho_*V);
+    explicitSource_.primitiveFieldRef() = cellBetaV/(rho_*V);
+    forceSum_ = vectorField(n, Zero);
+    timeForces_ += clock_.timeIncrement();
 }
 
 

@@ -33,8 +33,6 @@ Foam::voidFractionModel::voidFractionModel
     slabMid_(0),
     thickness_(0),
     images_(mesh),
-    nParticles_(0),
-    solid_(mesh.nCells(), 0),
     voidFraction_
     (
         IOobject
@@ -49,10 +47,9 @@ Foam::voidFractionModel::voidFractionModel
         dimensionedScalar("one", dimless, 1.0),
         zeroGradientFvPatchScalarField::typeName
     ),
-    spreadAsMade_(false),
-    rowsSpread_(false),
     split_(this)
 {
+    step_.solid.setSize(mesh.nCells(), 0);
     if (!(alphaMin_ >= 0 && alphaMin_ < 1))
     {
         FatalIOErrorInFunction(dict)
@@ -86,11 +83,11 @@ Foam::label Foam::voidFractionModel::collectStatistics(const particleData& parti
     // per-particle sums over the holders; each particle is added once
     scalarField& found = centreHolders_;
     found.setSize(particles.size());
-    forAll(found, p) found[p] = (centreCells_[p] >= 0);
-    combineSums(fractionSum_, found);
+    forAll(found, p) found[p] = (step_.centreCells[p] >= 0);
+    combineSums(step_.fractionSum, found);
     return stats_.collect
     (
-        fractionSum_, found, particleVolumes_, holders_, solid_, limiter_.nOverLimit(solid_)
+        step_.fractionSum, found, step_.particleVolumes, step_.holders, step_.solid, limiter_.nOverLimit(step_.solid)
     );
 }
 
@@ -130,7 +127,7 @@ void Foam::voidFractionModel::computeRows
 {
     // without periodic images the particles are the entries (no copy)
     const label n = x0.size();
-    nParticles_ = n;
+    step_.nParticles = n;
     const bool periodic =
         images_.shifts().size() && images_.make(x0, r0, centres, imageRules{*split_});
     // views of the lists' contents (a swapStep moves none)
@@ -138,21 +135,21 @@ void Foam::voidFractionModel::computeRows
     const UList<scalar> r(periodic ? images_.radii() : r0);
 
     // images lie outside the mesh unless a particle is outside it
-    centreCells_.setSize(x.size());
+    step_.centreCells.setSize(x.size());
     if (periodic)
     {
         forAll(x, i)
         {
-            centreCells_[i] = images_.isParticle(i) ? centres[images_.parent(i)]
+            step_.centreCells[i] = images_.isParticle(i) ? centres[images_.parent(i)]
               : images_.bounds().contains(x[i]) ? locator_.findCell(x[i]) : -1;
         }
     }
     else
     {
-        centreCells_ = centres;
+        step_.centreCells = centres;
     }
 
-    weights_.clear();
+    step_.weights.clear();
     if (split_ == this)
     {
         distribute(x, r);
@@ -163,28 +160,13 @@ void Foam::voidFractionModel::computeRows
         split_->distribute(x, r);
         swapStep(*split_);
     }
-    if (weights_.nParticles() != x.size())
+    if (step_.weights.nParticles() != x.size())
     {
         FatalErrorInFunction
-            << split_->type() << " produced weights for " << weights_.nParticles()
+            << split_->type() << " produced weights for " << step_.weights.nParticles()
             << " of " << x.size() << " particles and images" << abort(FatalError);
     }
-    if (x.size() > n) weights_.joinRows(images_.firstEntry());
-}
-
-
-void Foam::voidFractionModel::swapStep(voidFractionModel& other)
-{
-    std::swap(holders_, other.holders_);
-    images_.swapEntries(other.images_);
-    std::swap(nParticles_, other.nParticles_);
-    centreCells_.swap(other.centreCells_);
-    weights_.swap(other.weights_);
-    solid_.swap(other.solid_);
-    particleVolumes_.swap(other.particleVolumes_);
-    fractionSum_.swap(other.fractionSum_);
-    std::swap(spreadAsMade_, other.spreadAsMade_);
-    std::swap(rowsSpread_, other.rowsSpread_);
+    if (x.size() > n) step_.weights.joinRows(images_.firstEntry());
 }
 
 
@@ -194,7 +176,7 @@ void Foam::voidFractionModel::update
     particleHolders&& holders
 )
 {
-    holders_ = std::move(holders);
+    step_.holders = std::move(holders);
     const label n = particles.size();
     if (twoD_)
     {
@@ -206,26 +188,26 @@ void Foam::voidFractionModel::update
     const scalarField& r = particles.radii();
     carryHints(particles.ids());
     locator_.findCells(x0, hints_);
-    particleVolumes_.setSize(n);
-    forAll(particleVolumes_, p)
+    step_.particleVolumes.setSize(n);
+    forAll(step_.particleVolumes, p)
     {
-        particleVolumes_[p] = particleVolume(r[p]);
+        step_.particleVolumes[p] = particleVolume(r[p]);
     }
-    spreadAsMade_ = !smooths();
-    rowsSpread_ = false;
-    if (spreadAsMade_)
+    step_.spreadAsMade = !smooths();
+    step_.rowsSpread = false;
+    if (step_.spreadAsMade)
     {
-        solid_ = Zero;
-        fractionSum_.setSize(n);
-        fractionSum_ = Zero;
+        step_.solid = Zero;
+        step_.fractionSum.setSize(n);
+        step_.fractionSum = Zero;
     }
     computeRows(x0, r, hints_);
-    centreCells_ = hints_;
+    step_.centreCells = hints_;
 
     stats_ = mappingStatistics();
-    if (!rowsSpread_) spreadVolumes();
+    if (!step_.rowsSpread) spreadVolumes();
     const label nOver = collectStatistics(particles);
-    stats_.movedVolume = limiter_.limit(solid_, nOver, stats_.solidVolume);
+    stats_.movedVolume = limiter_.limit(step_.solid, nOver, stats_.solidVolume);
 
     const scalarField& V = mesh_.V();
     scalarField& alpha = voidFraction_.primitiveFieldRef();
@@ -233,11 +215,11 @@ void Foam::voidFractionModel::update
     {
         // solid volumes are sums of non-negative parts; a smoothing solve
         // may leave round-off below zero, which must not lift alpha above 1
-        alpha[celli] = min(1 - solid_[celli]/V[celli], scalar(1));
+        alpha[celli] = min(1 - step_.solid[celli]/V[celli], scalar(1));
     }
     voidFraction_.correctBoundaryConditions();
     // the limiter moves volume; the total it keeps is what is reported
-    if (nOver) stats_.solidVolume = gSum(solid_);
+    if (nOver) stats_.solidVolume = gSum(step_.solid);
     stats_.setRange(alpha);
 }
 
@@ -246,21 +228,21 @@ void Foam::voidFractionModel::spreadVolumes()
 {
     // each particle's share from the same read of the rows: they are the
     // largest array of a step, and reading them dominates
-    fractionSum_.setSize(weights_.nParticles());
-    fractionSum_ = Zero;
+    step_.fractionSum.setSize(step_.weights.nParticles());
+    step_.fractionSum = Zero;
     spreadAlso
     (
-        particleVolumes_, solid_,
-        [&](const label p, const label, const scalar w) { fractionSum_[p] += w; }
+        step_.particleVolumes, step_.solid,
+        [&](const label p, const label, const scalar w) { step_.fractionSum[p] += w; }
     );
 }
 
 
 void Foam::voidFractionModel::distributeToCentreCells()
 {
-    forAll(centreCells_, i)
+    forAll(step_.centreCells, i)
     {
-        if (centreCells_[i] >= 0) weights_.append(centreCells_[i], 1.0);
+        if (step_.centreCells[i] >= 0) step_.weights.append(step_.centreCells[i], 1.0);
         endRow(i);
     }
 }

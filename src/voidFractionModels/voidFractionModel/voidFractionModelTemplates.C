@@ -28,7 +28,7 @@ void Foam::voidFractionModel::spreadAlso
 {
     perCell.setSize(mesh_.nCells());
     perCell = Zero;
-    weights_.forAllEntries
+    step_.weights.forAllEntries
     (
         [&](const label p, const label celli, const scalar w)
         {
@@ -94,13 +94,13 @@ void Foam::voidFractionModel::gatherHere
     }
     const Field<Type>& f = tTransposed();
 
-    perParticle.setSize(weights_.nParticles());
+    perParticle.setSize(step_.weights.nParticles());
     forAll(perParticle, p)
     {
         Type sum(pTraits<Type>::zero);
-        for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+        for (const particleCellWeights::entry e : step_.weights.row(p))
         {
-            sum += weights_.fraction(k)*f[weights_.cell(k)];
+            sum += e.fraction*f[e.cell];
         }
         perParticle[p] = sum;
     }
@@ -115,7 +115,7 @@ void Foam::voidFractionModel::gather
 )
 {
     gatherHere(perCell, perParticle);
-    holders_.combine(perParticle, plusEqOp<Type>());
+    step_.holders.combine(perParticle, plusEqOp<Type>());
 }
 
 
@@ -131,7 +131,7 @@ void Foam::voidFractionModel::combineSums
     static_assert(nA + nB <= 6, "two sums of at most six components");
 
     // a symmTensor only carries the six sums through the exchange
-    holders_.combine<symmTensor>
+    step_.holders.combine<symmTensor>
     (
         a.size(), plusEqOp<symmTensor>(),
         [&](const label p)
@@ -167,8 +167,8 @@ void Foam::voidFractionModel::gather
     else
     {
         // one pass over the rows for both fields
-        perParticleA.setSize(weights_.nParticles());
-        perParticleB.setSize(weights_.nParticles());
+        perParticleA.setSize(step_.weights.nParticles());
+        perParticleB.setSize(step_.weights.nParticles());
         forAll(perParticleA, p)
         {
             TypeA sumA;
@@ -198,7 +198,7 @@ void Foam::voidFractionModel::gatherApply
         forAll(a, p) apply(p, a[p], b[p]);
         return;
     }
-    const label n = weights_.nParticles();
+    const label n = step_.weights.nParticles();
     for (label p = 0; p < n; ++p)
     {
         TypeA sumA;
@@ -222,7 +222,7 @@ void Foam::voidFractionModel::gatherApplySpread
     if (smooths() || Pstream::parRun())
     {
         // the sums are complete after the gather's exchange only
-        const label n = weights_.nParticles();
+        const label n = step_.weights.nParticles();
         Field<SpreadA> sa(n);
         Field<SpreadB> sb(n);
         gatherApply
@@ -247,12 +247,10 @@ void Foam::voidFractionModel::gatherApplySpread
             SpreadA sa;
             SpreadB sb;
             apply(p, a, b, sa, sb);
-            for (label k = weights_.begin(p); k < weights_.end(p); ++k)
+            for (const particleCellWeights::entry e : step_.weights.row(p))
             {
-                const scalar w = weights_.fraction(k);
-                const label celli = weights_.cell(k);
-                spreadA[celli] += w*sa;
-                spreadB[celli] += w*sb;
+                spreadA[e.cell] += e.fraction*sa;
+                spreadB[e.cell] += e.fraction*sb;
             }
         }
     );

@@ -162,9 +162,7 @@ def bed_height(x, r):
 
 def snapshots(case, dt):
     """The VTK particle files written after SETTLE, in time order."""
-    paths = sorted(glob.glob(os.path.join(case, "VTK", "particles_*.vtk")),
-                   key=lambda p: int(re.findall(r"_(\d+)\.vtk", p)[0]))
-    return [p for p in paths if int(re.findall(r"_(\d+)\.vtk", p)[0])*dt > SETTLE + 1e-9]
+    return [p for p in particleVtk.files(case) if particleVtk.step(p)*dt > SETTLE + 1e-9]
 
 
 def bed_measures(case):
@@ -280,15 +278,13 @@ def plot(results):
         import matplotlib.pyplot as plt
     except ImportError:
         return
-    runs = [r for r in sorted(results, key=order) if glob.glob(os.path.join(WORK, r["name"], "VTK", "particles_*.vtk"))]
+    runs = [r for r in sorted(results, key=order) if particleVtk.files(os.path.join(WORK, r["name"]))]
     if not runs:
         return
     fig, axes = plt.subplots(1, len(runs), figsize=(3.2*len(runs), 3.6), squeeze=False)
     for ax, r in zip(axes[0], runs):
         case = os.path.join(WORK, r["name"])
-        paths = sorted(glob.glob(os.path.join(case, "VTK", "particles_*.vtk")),
-                       key=lambda p: int(re.findall(r"_(\d+)\.vtk", p)[0]))
-        x, rad, _ = particleVtk.read(paths[-1])
+        x, rad, _ = particleVtk.read(particleVtk.files(case)[-1])
         depth = dem_variable(case, "depth")
         # a slice of 3 parcel diameters about the middle of the depth
         keep = [(p[0], p[2]) for p, q in zip(x, rad) if abs(p[1] - depth/2) < 3*q]

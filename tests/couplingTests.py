@@ -6,7 +6,6 @@ Saffman-Mei lift, the added-mass ODE, Richardson-Zaki, Ergun, bed weight,
 Wen-Yu), exact momentum exchange, restart, serial against 2 ranks, and bad
 input stopping with a clear error and no hang."""
 import csv
-import glob
 import json
 import math
 import os
@@ -150,8 +149,17 @@ def test_settling_sphere():
     check("velocity history within 2 % of the Schiller-Naumann ODE", r["history_error"] < 0.02,
           "(%.3f %% of terminal)" % (100*r["history_error"]))
     check_coupling_log("settlingSphere", os.path.join(case, "log.pimpleDEMFoam"), 0.99)
-    check("particles written for ParaView (legacy VTK)",
-          os.path.isfile(os.path.join(case, "VTK", "particles_800.vtk")))
+    # every write time's particle file, listed at its time in the series ParaView opens
+    dt = float(re.search(r"(?m)^deltaT\s+(\S+);", open(os.path.join(case, "system", "controlDict")).read()).group(1))
+    written = [(os.path.basename(f), particleVtk.step(f)*dt) for f in particleVtk.files(case)]
+    series = json.load(open(os.path.join(case, "VTK", "particles.vtp.series")))["files"]
+    listed = [(s["name"], s["time"]) for s in series]
+    check("particles written for ParaView: 4 files, each in particles.vtp.series at its time",
+          len(written) == 4 and len(listed) == 4 and
+          all(a == b and abs(t - s) < 1e-9 for (a, t), (b, s) in zip(written, listed)), str(listed))
+    x, r, v = particleVtk.read(os.path.join(case, "VTK", written[-1][0])) if written else ([], [], [])
+    check("the file's sphere: radius 0.5 mm, settling down", len(r) == 1 and abs(r[0] - 5e-4) < 1e-9
+          and v[0][2] < 0, "(%s, %s)" % (r, v))
 
 
 def settle_with(dest, coupling_edits, reference, label):
@@ -344,6 +352,11 @@ def test_bed_restart():
                            full[(r, f)]).max()/np.abs(full[(r, f)]).max() for r in (0, 1))
         near("%s at t = 0.004, continued against uninterrupted (relative to its largest)" % f,
              worst, 0, 1e-10)
+    listed = [(s["name"], s["time"]) for s in
+              json.load(open(os.path.join(case, "VTK", "particles.vtp.series")))["files"]]
+    check("the particles' time series continued: each write time once, in order",
+          [round(t, 9) for _, t in listed] == [0.002, 0.004] and
+          [n for n, _ in listed] == ["particles_20.vtp", "particles_40.vtp"], str(listed))
 
     print("  a time directory written incompletely is an error naming it, never a silent restart")
     last = os.path.join(case, "0.004")
@@ -503,7 +516,7 @@ def fixed_bed_gradient(bed, dest, grading, u0=0.25, z_lo=0.0045, z_hi=0.0165, sn
           out[-800:] if rc else "")
     if rc:
         return None
-    x, r, _ = particleVtk.read(os.path.join(case, "VTK", "particles_400.vtk"))
+    x, r, _ = particleVtk.read(os.path.join(case, "VTK", "particles_400.vtp"))
     header = open(os.path.join(case, "postProcessing", "inletPressure", "0", "surfaceFieldValue.dat")).read()
     area = float(re.search(r"^# Area\s*:\s*(\S+)", header, re.M).group(1))
     eps = 1 - sphere_slab_volume(x[:, 2], r, z_lo, z_hi)/(area*(z_hi - z_lo))
@@ -594,9 +607,7 @@ def test_spouted_bed():
     # the jet: the parcels over the channel rise, those at the side walls stay
     sys.path.insert(0, os.path.join(TUTORIALS))
     import particleVtk
-    vtk = sorted(glob.glob(os.path.join(run, "VTK", "particles_*.vtk")),
-                 key=lambda f: int(re.findall(r"_(\d+)\.vtk", f)[0]))
-    x, r, v = particleVtk.read(vtk[-1])
+    x, r, v = particleVtk.read(particleVtk.files(run)[-1])
     over_jet = (np.abs(x[:, 0]) < 0.012) & (x[:, 2] < 0.15)
     at_walls = np.abs(x[:, 0]) > 0.1
     rise, still = float(np.mean(v[over_jet, 2])), float(np.mean(np.linalg.norm(v[at_walls], axis=1)))
@@ -1033,11 +1044,11 @@ def test_coupling_scale():
     # on 2 slabs (x below and above half the width, periodic in x) a particle is held
     # by each slab its sphere (or its periodic image) meets
     case = os.path.join(work, "exchange_1e4_2")
-    vtks = [f for f in os.listdir(os.path.join(case, "VTK"))] if os.path.isdir(os.path.join(case, "VTK")) else []
+    vtks = particleVtk.files(case)
     if not vtks:
         check("the 2-rank exchange run wrote its particles", False, "")
         return
-    x, r, _ = particleVtk.read(os.path.join(case, "VTK", sorted(vtks)[-1]))
+    x, r, _ = particleVtk.read(vtks[-1])
     width = float(re.search(r"^variable width\s+equal\s+(\S+)", open(os.path.join(
         case, "DEM", "in.parameters")).read(), re.M).group(1))
     expected = 0

@@ -219,7 +219,7 @@ def analyse_bubbling(case):
     heights = []
     dt = float(re.search(r"(?m)^deltaT\s+(\S+);", open(os.path.join(case, "system", "controlDict")).read()).group(1))
     for path in bedData.snapshots(case):
-        step = int(re.findall(r"_(\d+)\.vtk", path)[0])
+        step = bedData.step(path)
         if step * dt > SETTLE:
             x, r, _ = bedData.read_vtk(path)
             heights.append(volume_quantile(x[:, 2], r ** 3, 0.95))

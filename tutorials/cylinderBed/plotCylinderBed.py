@@ -20,7 +20,7 @@ import numpy as np
 # the fluidisedBed tutorial's readers, also from a copy of the case elsewhere
 PROJECT = os.environ.get("VFM_PROJECT_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
 sys.path[:0] = [os.path.join(PROJECT, "tutorials"), os.path.join(PROJECT, "tutorials", "fluidisedBed")]
-from bedData import bed_weight, inlet_area, pressure_drop, pressure_panel, read_vtk, snapshots  # noqa: E402
+from bedData import bed_weight, inlet_area, pressure_drop, pressure_panel, read_vtk, snapshots, step as step_of  # noqa: E402
 from weightShares import weight_shares  # noqa: E402
 
 START_UP = 0.3
@@ -67,7 +67,7 @@ for k, path in enumerate(files):
     a.set_aspect("equal")
     a.set_xticks([-15, 0, 15])
     a.set_yticks([] if k else [0, 20, 40, 60])
-    step = int(re.findall(r"_(\d+)\.vtk", path)[0])
+    step = step_of(path)
     a.set_title(f"t = {step*dt:.2f} s\n|y| < 3 mm" + ("\nz [mm]" if not k else ""), fontsize=8)
 fig.subplots_adjust(wspace=0.35)
 if points is not None:

@@ -1,7 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Reading a fluidisedBed run: the particles of a VTK file, the bed weight
 per area, the inlet pressure history and the solver log's extremes."""
-import glob
 import os
 import re
 
@@ -21,12 +20,9 @@ RHO_F = caseProperties.fluid()[1]
 RHO_P, G = caseProperties.particle_density(), caseProperties.gravity()
 
 
-read_vtk = particleVtk.read     # positions, radii and velocities of a particles_N.vtk file
-
-
-def snapshots(case):
-    files = glob.glob(os.path.join(case, "VTK", "particles_*.vtk"))
-    return sorted(files, key=lambda f: int(re.findall(r"_(\d+)\.vtk", f)[0]))
+read_vtk = particleVtk.read     # positions, radii and velocities of a particle file
+snapshots = particleVtk.files   # a case's particle files in time order
+step = particleVtk.step         # the time step a particle file was written at
 
 
 def _inlet_files(case):

@@ -8,9 +8,8 @@ import re
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-import numpy as np
 
-from bedData import bed_weight, pressure_drop, pressure_panel, read_vtk, snapshots
+from bedData import bed_weight, pressure_drop, pressure_panel, read_vtk, snapshots, step as step_of
 
 weight = bed_weight(".")
 t, dp = pressure_drop(".")
@@ -32,16 +31,20 @@ n = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", op
 parcels = re.search(r"coarseGraining\s*\{\s*factor\s+([0-9.]+);", couplingText)
 what = f"{n:,} parcels (h = {parcels.group(1)})" if parcels else f"{n:,} beads"
 ax.set_title(f"{model}: {what} in air", fontsize=9)
+dt = float(re.search(r"^deltaT\s+(\S+);", open("system/controlDict").read(), re.M).group(1))
+points = None
 for k, path in enumerate(files):
     x, r, v = read_vtk(path)
     a = fig.add_subplot(1, len(files) + 2, k + 3)
-    a.scatter(1e3*x[:, 0], 1e3*x[:, 2], s=0.3, c=v[:, 2], cmap="coolwarm", vmin=-0.3, vmax=0.3)
+    points = a.scatter(1e3*x[:, 0], 1e3*x[:, 2], s=0.3, c=v[:, 2], cmap="coolwarm", vmin=-0.3, vmax=0.3)
     a.set_xlim(0, 48)
     a.set_ylim(0, 120)
     a.set_aspect("equal")
     a.set_xticks([])
     a.set_yticks([] if k else [0, 40, 80, 120])
-    step = int(re.findall(r"_(\d+)\.vtk", path)[0])
-    a.set_title(f"t = {step*1e-4:.1f} s", fontsize=8)
+    step = step_of(path)
+    a.set_title(f"t = {step*dt:.1f} s", fontsize=8)
 plt.tight_layout()
+if points is not None:
+    fig.colorbar(points, ax=fig.axes[1:], shrink=0.8, label="bead vertical velocity [m/s]")
 plt.savefig("fluidisedBed.png", dpi=120)

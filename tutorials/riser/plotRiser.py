@@ -5,7 +5,6 @@ their slip against the single bead's terminal velocity with the
 Richardson-Zaki correction (Schiller-Naumann drag and Rowe's exponent,
 computed here, independent of the solver); the beads fed, removed and held.
 Writes riser.png, riser.csv and riser.result; prints the comparison."""
-import glob
 import math
 import os
 import re
@@ -41,10 +40,8 @@ n_rz = (4.7 + 0.41*re_t**0.75)/(1 + 0.175*re_t**0.75)
 
 # the beads of the written times in the second half of the run
 snapshots = []
-for path in glob.glob("VTK/particles_*.vtk"):
-    t = int(re.search(r"_(\d+)\.vtk$", path).group(1))*dt
-    snapshots.append((t, path))
-snapshots.sort()
+for path in particleVtk.files("."):
+    snapshots.append((particleVtk.step(path)*dt, path))
 end = snapshots[-1][0] if snapshots else 0
 late = [(t, p) for t, p in snapshots if t >= max(0.3, 0.6*end)]
 bins = np.linspace(0, height, 21)

@@ -11,7 +11,6 @@ difference from each measured profile, the spout's width, the fountain's
 height, the pressure drop over the weight, the particle count) and
 spoutedBed.png (a snapshot coloured by speed, the profiles with the
 measured points)."""
-import glob
 import os
 import sys
 

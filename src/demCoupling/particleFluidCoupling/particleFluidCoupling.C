@@ -7,7 +7,7 @@
 #include "particleFluidCoupling.H"
 #include "readChoice.H"
 #include "fvc.H"
-#include "OFstream.H"
+#include "particleVtkWriter.H"
 #include "StringStream.H"
 #include "zeroGradientFvPatchFields.H"
 #include "ListListOps.H"
@@ -66,6 +66,14 @@ Foam::particleFluidCoupling::outsideActionNames
 ({
     { outsideAction::error, "error" },
     { outsideAction::remove, "remove" },
+});
+
+
+const Foam::Enum<Foam::vtk::formatType>
+Foam::particleFluidCoupling::particleOutputNames
+({
+    { vtk::formatType::INLINE_BASE64, "binary" },
+    { vtk::formatType::INLINE_ASCII, "ascii" },
 });
 
 
@@ -133,7 +141,11 @@ Foam::particleFluidCoupling::particleFluidCoupling
     worstMomentumError_(0),
     totalForce_(Zero),
     mostHeld_(0),
-    reportExchange_(dict_.getOrDefault<bool>("reportExchange", false))
+    reportExchange_(dict_.getOrDefault<bool>("reportExchange", false)),
+    particleOutput_
+    (
+        readChoice(dict_, "particleOutput", particleOutputNames, vtk::formatType::INLINE_BASE64)
+    )
 {
     readForces();
 
@@ -696,28 +708,17 @@ void Foam::particleFluidCoupling::write()
     const particleData all(particlesOnMaster());
     if (!Pstream::master()) return;
 
-    mkDir(runTime.globalPath()/"VTK");
-    OFstream os(runTime.globalPath()/"VTK"/("particles_" + Foam::name(runTime.timeIndex()) + ".vtk"));
-    const pointField& x = all.positions();
-    const label n = x.size();
-    os  << "# vtk DataFile Version 2.0" << nl
-        << "particles at time " << runTime.timeName() << nl
-        << "ASCII" << nl << "DATASET POLYDATA" << nl
-        << "POINTS " << n << " double" << nl;
-    for (const point& pt : x)
-    {
-        os  << pt.x() << ' ' << pt.y() << ' ' << pt.z() << nl;
-    }
-    os  << "VERTICES " << n << ' ' << 2*n << nl;
-    for (label i = 0; i < n; ++i) os << "1 " << i << nl;
-    os  << "POINT_DATA " << n << nl
-        << "SCALARS radius double 1" << nl << "LOOKUP_TABLE default" << nl;
-    for (const scalar r : all.radii()) os << r << nl;
-    os  << "SCALARS id int 1" << nl << "LOOKUP_TABLE default" << nl;
-    for (const label id : all.ids()) os << id << nl;
-    os  << "VECTORS velocity double" << nl;
-    for (const vector& u : all.velocities())
-    {
-        os  << u.x() << ' ' << u.y() << ' ' << u.z() << nl;
-    }
+    const fileName file("particles_" + Foam::name(runTime.timeIndex()) + ".vtp");
+    particleVtkWriter vtp(particleOutput_, runTime.globalPath()/"VTK"/file);
+    vtp.writeGeometry(all.positions(), "time='" + runTime.timeName() + "'");
+    vtp.write("radius", all.radii());
+    vtp.write("id", all.ids());
+    vtp.write("velocity", all.velocities());
+    vtp.close();
+
+    // a restarted run continues the series: later entries are dropped
+    const fileName series(runTime.globalPath()/"VTK"/"particles.vtp");
+    if (particleSeries_.empty()) particleSeries_.load(series, true, runTime.value());
+    particleSeries_.append(runTime.value(), file);
+    particleSeries_.write(series);
 }

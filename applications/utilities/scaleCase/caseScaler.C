@@ -9,8 +9,7 @@
 #include "caseFiles.H"
 #include "fluidCoarsener.H"
 #include "exactScaling.H"
-#include "IFstream.H"
-#include "OFstream.H"
+#include "modelCoefficients.H"
 #include "IOstreams.H"
 #include "dimensionedScalar.H"
 #include "primitiveEntry.H"
@@ -20,7 +19,6 @@
 #include "stringOps.H"
 #include "dimensionSets.H"
 #include <cctype>
-#include <fstream>
 #include <functional>
 #include <vector>
 #include <regex>
@@ -204,25 +202,61 @@ void Foam::caseScaler::scaleTransport() const
 }
 
 
+void Foam::caseScaler::scaleCoefficients
+(
+    dictionary& coeffs,
+    const word& model,
+    const fileName& where
+) const
+{
+    wordList lengths, unchanged;
+    for (const modelCoefficients::coefficient& c : modelCoefficients::of(model))
+    {
+        const bool length =
+            c.what == modelCoefficients::particleLength || c.what == modelCoefficients::smoothingLength;
+        (length ? lengths : unchanged).append(c.keyword);
+    }
+    for (const word& k : lengths) scaleEntry(coeffs, k, h_, where);
+    requireKnown(coeffs, lengths, unchanged, where);
+    for (entry& e : coeffs)
+    {
+        if (!e.isDict()) continue;
+        const fileName inner(where/e.keyword());
+        scaleCoefficients(e.dict(), coefficientsModel(e.keyword(), inner), inner);
+    }
+}
+
+
+Foam::word Foam::caseScaler::coefficientsModel(const word& dictName, const fileName& where)
+{
+    const word model(dictName.substr(0, max(label(dictName.size()) - 6, label(0))));
+    if (!dictName.endsWith("Coeffs") || !modelCoefficients::registered(model))
+    {
+        FatalErrorInFunction
+            << where << ": scaleCase knows the coefficients of the void fraction models "
+            << modelCoefficients::models() << " (<model>Coeffs) and coarseGraining, not "
+            << dictName << exit(FatalError);
+    }
+    return model;
+}
+
+
 void Foam::caseScaler::scaleCoupling() const
 {
     const fileName file(dir_/"constant"/"couplingProperties");
     if (!isFile(file)) return;
     dictionary dict(read(file));
-    const wordList lengths({"voxelSize", "bandwidth"});
-    const wordList unchanged
-    ({
-        "couplingInterval", "alphaMin", "voxelsPerSide", "voxelsPerDiameter", "voxelsPerCell",
-        "subGridResolution", "bandwidthOverCellSize", "cutoff", "coefficient",
-        "nSteps", "factor"
-    });
-    for (const word& k : lengths) scaleEntry(dict, k, h_, file);
-    requireKnown(dict, lengths, unchanged, file);
+    requireKnown(dict, wordList(), {"couplingInterval", "alphaMin"}, file);
     for (entry& e : dict)
     {
         if (!e.isDict() || e.keyword() == "FoamFile") continue;
-        for (const word& k : lengths) scaleEntry(e.dict(), k, h_, file/e.keyword());
-        requireKnown(e.dict(), lengths, unchanged, file/e.keyword());
+        const fileName where(file/e.keyword());
+        if (e.keyword() == "coarseGraining")
+        {
+            requireKnown(e.dict(), wordList(), {"factor"}, where);
+            continue;
+        }
+        scaleCoefficients(e.dict(), coefficientsModel(e.keyword(), where), where);
     }
     write(file, dict);
 }
@@ -232,26 +266,17 @@ void Foam::caseScaler::scaleMesh() const
 {
     // a blockMeshDict, or the template a tutorial's Allrun fills in: only
     // the scale changes, the file keeps its layout and comments
-    const std::regex scaleLine("(^|\n)(\\s*(scale|convertToMeters)\\s+)([-+0-9.eE]+)(\\s*;)");
     for (const word name : {"blockMeshDict", "blockMeshDict.template"})
     {
         const fileName block(dir_/"system"/name);
         if (!isFile(block)) continue;
-        std::string text(caseFiles::readText(block));
-        std::smatch m;
-        std::ostringstream num;
-        num.precision(15);
-        if (std::regex_search(text, m, scaleLine))
-        {
-            num << std::stod(m[4].str())*h_;
-            text = m.prefix().str() + m[1].str() + m[2].str() + num.str() + m[5].str() + m.suffix().str();
-        }
-        else
-        {
-            num << h_;
-            text += "\nscale " + num.str() + ";   // scaleCase\n";
-        }
-        caseFiles::writeText(block, text);
+        const dictionary dict(read(block));
+        const word key(dict.found("convertToMeters") && !dict.found("scale") ? "convertToMeters" : "scale");
+        caseFiles::setEntry
+        (
+            block, {key}, caseFiles::number(dict.getOrDefault<scalar>(key, 1)*h_),
+            "scaleCase -factor " + caseFiles::number(h_)
+        );
     }
     if (isFile(dir_/"constant"/"polyMesh"/"points"))
     {
@@ -267,15 +292,15 @@ void Foam::caseScaler::scaleMesh() const
 }
 
 
-void Foam::caseScaler::rewriteDemParameters
+std::string Foam::caseScaler::demParametersText
 (
     const std::function<scalar(const demParameter&)>& newValue
 ) const
 {
     // variable NAME equal NUMBER  # ... [M L T] ... {role}
     const fileName file(dir_/"DEM"/"in.parameters");
-    if (!isFile(file)) return;
-    std::ifstream in(file);
+    if (!isFile(file)) return std::string();
+    std::istringstream in(caseFiles::readText(file));
     std::ostringstream out;
     const std::regex number
         ("^(\\s*variable\\s+)(\\S+)(\\s+equal\\s+)([-+0-9.eE]+)(\\s*)(#.*)?$");
@@ -325,8 +350,27 @@ void Foam::caseScaler::rewriteDemParameters
         num << newValue(p);
         out << m[1].str() << m[2].str() << m[3].str() << num.str() << m[5].str() << comment << '\n';
     }
-    in.close();
-    std::ofstream(file) << out.str();
+    return out.str();
+}
+
+
+void Foam::caseScaler::rewriteDemParameters
+(
+    const std::function<scalar(const demParameter&)>& newValue
+) const
+{
+    const fileName file(dir_/"DEM"/"in.parameters");
+    if (isFile(file)) caseFiles::writeText(file, demParametersText(newValue));
+}
+
+
+std::vector<Foam::caseScaler::demParameter> Foam::caseScaler::demParameters() const
+{
+    // a vector: dimensionSet's assignment insists on equal dimensions, so
+    // the parameters are copy-constructed, never assigned
+    std::vector<demParameter> found;
+    demParametersText([&found](const demParameter& p) { found.push_back(p); return p.value; });
+    return found;
 }
 
 
@@ -346,7 +390,7 @@ void Foam::caseScaler::scaleDemData(const fileName& file) const
 {
     // atom_style granular: Atoms "id type diameter density x y z [ix iy iz]",
     // Velocities "id vx vy vz wx wy wz"; the box and tilt lines are lengths
-    std::ifstream in(file);
+    std::istringstream in(caseFiles::readText(file));
     std::ostringstream out;
     out.precision(17);
     std::string line, section;
@@ -410,14 +454,97 @@ void Foam::caseScaler::scaleDemData(const fileName& file) const
         }
         out << '\n';
     }
-    in.close();
-    std::ofstream(file) << out.str();
+    caseFiles::writeText(file, out.str());
 }
 
 
 // the thinnest coarse bed measured to keep the fine bed's pressure drop
 // and Umf: the wide bed at h = 4, 10.5 parcels tall (docs/coarseGraining.md)
 const Foam::label Foam::caseScaler::minParcelsAcross = 10;
+
+
+Foam::caseScaler::parcelSetting Foam::caseScaler::checkParcelCase
+(
+    const word& law,
+    const bool coarsenFluid
+) const
+{
+    if (law != "exact" && law != "cubic")
+    {
+        FatalErrorInFunction
+            << "-parcels " << law << ": cubic or exact" << exit(FatalError);
+    }
+    const fileName coupling(dir_/"constant"/"couplingProperties");
+    const dictionary dict(read(coupling));
+    if (dict.found("coarseGraining"))
+    {
+        FatalErrorInFunction
+            << coupling << " already has coarseGraining" << exit(FatalError);
+    }
+    // 2D: a parcel is a disk of h^2 disks, its mass (per depth) h^2
+    const bool twoD = dict.getOrDefault<bool>("twoDimensional", false);
+    const label interval = dict.get<label>("couplingInterval");
+    parcelSetting s;
+    s.exact = (law == "exact");
+    s.twoD = twoD;
+    s.perParcel = std::pow(h_, twoD ? 2 : 3);
+    s.fineInterval = s.interval = interval;
+    s.fluidDeltaT = read(dir_/"system"/"controlDict").get<scalar>("deltaT");
+    s.timeGrowth = 0;
+    return s;
+}
+
+
+Foam::scalar Foam::caseScaler::parcelTimeStep
+(
+    const scalar fine,
+    const scalar allowed,
+    parcelSetting& s
+)
+{
+    // With the fluid coarsened the coupling time is the fine one times the
+    // fluid step's growth, taken in as few DEM steps as the law allows.
+    // On the fine mesh the step is lowered so that the coupling time stays
+    // a whole multiple or fraction of the fluid step
+    if (s.timeGrowth > 0)
+    {
+        const scalar couplingTime = s.fineInterval*fine*s.timeGrowth;
+        s.interval = max(label(std::ceil(couplingTime/allowed - 1e-9)), label(1));
+        return couplingTime/s.interval;
+    }
+    const scalar one = s.fluidDeltaT/s.fineInterval;
+    return allowed >= one
+        ? std::floor(allowed/one + 1e-9)*one
+        : one/std::ceil(one/allowed - 1e-9);
+}
+
+
+Foam::scalar Foam::caseScaler::parcelValue
+(
+    const demParameter& p,
+    parcelSetting& s
+) const
+{
+    if (p.roles.found("count"))
+    {
+        return max(std::round(p.value/s.perParcel), scalar(1));
+    }
+    if (p.roles.found("timestep"))
+    {
+        // exact: h; the coarse grain model, contacts unscaled: sqrt of the
+        // mass, h^3/2 (Zhang, Huang and Zhao 2021, Eq. 17), or h for disks
+        return parcelTimeStep(p.value, p.value*(s.exact ? h_ : std::sqrt(s.perParcel)), s);
+    }
+    if (p.roles.found("particle"))
+    {
+        // exact: by its dimensions; the coarse grain model keeps the
+        // particles' properties and scales their size
+        return s.exact
+            ? p.value*exactScaling::factor(p.dims, h_, p.name)
+            : (p.dims == dimLength ? p.value*h_ : p.value);
+    }
+    return p.value;
+}
 
 
 void Foam::caseScaler::makeParcels
@@ -428,108 +555,40 @@ void Foam::caseScaler::makeParcels
     const bool relativeSmoothing
 ) const
 {
-    const bool exact = (law == "exact");
-    if (!exact && law != "cubic")
-    {
-        FatalErrorInFunction
-            << "-parcels " << law << ": cubic or exact" << exit(FatalError);
-    }
-    const fileName coupling(dir_/"constant"/"couplingProperties");
-    const dictionary couplingDict(read(coupling));
-    if (couplingDict.found("coarseGraining"))
-    {
-        FatalErrorInFunction
-            << coupling << " already has coarseGraining" << exit(FatalError);
-    }
-    const label interval = couplingDict.get<label>("couplingInterval");
-    // 2D: a parcel is a disk of h^2 disks, its mass (per depth) h^2
-    const bool twoD = couplingDict.getOrDefault<bool>("twoDimensional", false);
-    const scalar perParcel = std::pow(h_, twoD ? 2 : 3);
+    parcelSetting s(checkParcelCase(law, coarsenFluid));
     fluidCoarsener::meshGrowth growth{h_, h_, GREAT};
     if (coarsenFluid)
     {
         growth = fluidCoarsener(dir_, h_, minCells, relativeSmoothing).coarsen();
+        s.timeGrowth = growth.time;
     }
-    const scalar deltaT = read(dir_/"system"/"controlDict").get<scalar>("deltaT");
-    std::ofstream(coupling, std::ios::app)
-        << "\ncoarseGraining { factor " << h_ << "; forceScaling " << law
-        << "; }   // scaleCase -parcels\n";
+    const fileName coupling(dir_/"constant"/"couplingProperties");
+    caseFiles::setEntry(coupling, {"coarseGraining", "factor"}, caseFiles::number(h_), "scaleCase -parcels");
+    caseFiles::setEntry(coupling, {"coarseGraining", "forceScaling"}, law);
 
-    // The DEM step the law allows. On the fine mesh it is lowered so that
-    // the coupling time stays a whole multiple or fraction of the fluid
-    // step; with the fluid coarsened the coupling time is the fine one
-    // times h, taken in as few DEM steps as the law allows
-    label newInterval = interval;
-    auto demStep = [&](const scalar fine, const scalar allowed)
-    {
-        if (coarsenFluid)
-        {
-            const scalar couplingTime = interval*fine*growth.time;
-            newInterval = max(label(std::ceil(couplingTime/allowed - 1e-9)), label(1));
-            return couplingTime/newInterval;
-        }
-        const scalar one = deltaT/interval;
-        return allowed >= one
-            ? std::floor(allowed/one + 1e-9)*one
-            : one/std::ceil(one/allowed - 1e-9);
-    };
-    Info<< "DEM parameters for parcels of " << h_ << "^" << (twoD ? 2 : 3)
-        << (twoD ? " disks (" : " particles (") << law << "):" << nl;
+    Info<< "DEM parameters for parcels of " << h_ << "^" << (s.twoD ? 2 : 3)
+        << (s.twoD ? " disks (" : " particles (") << law << "):" << nl;
     rewriteDemParameters
     (
         [&](const demParameter& p)
         {
-            scalar v = p.value;
-            if (p.roles.found("count"))
-            {
-                v = max(std::round(p.value/perParcel), scalar(1));
-            }
-            else if (p.roles.found("timestep"))
-            {
-                // exact: h; the coarse grain model, contacts unscaled:
-                // sqrt of the mass, h^3/2 (Zhang, Huang and Zhao 2021,
-                // Eq. 17), or h for disks
-                v = demStep(p.value, p.value*(exact ? h_ : std::sqrt(perParcel)));
-            }
-            else if (p.roles.found("particle"))
-            {
-                // exact: by its dimensions; the coarse grain model keeps
-                // the particles' properties and scales their size
-                v = exact
-                    ? p.value*exactScaling::factor(p.dims, h_, p.name)
-                    : (p.dims == dimLength ? p.value*h_ : p.value);
-            }
+            const scalar v = parcelValue(p, s);
             Info<< "    " << p.name << ": " << p.value << " -> " << v << nl;
             return v;
         }
     );
     if (coarsenFluid)
     {
-        setCouplingInterval(newInterval);
-        Info<< "    couplingInterval: " << interval << " -> " << newInterval << " DEM steps"
+        caseFiles::setEntry
+        (
+            coupling, {"couplingInterval"}, Foam::name(s.interval), "scaleCase -parcels: DEM steps"
+        );
+        Info<< "    couplingInterval: " << s.fineInterval << " -> " << s.interval << " DEM steps"
             << " (the coupling time times " << growth.time << ", as the fluid step, in DEM"
             << " steps no longer than the law allows)" << nl;
     }
     Info<< endl;
-    warnOfNarrowBeds(couplingDict, minCells, growth.narrowestCell);
-}
-
-
-void Foam::caseScaler::setCouplingInterval(const label n) const
-{
-    const fileName file(dir_/"constant"/"couplingProperties");
-    const std::string text(caseFiles::readText(file));
-    const std::regex line("(^|\\n)(\\s*couplingInterval\\s+)\\d+(\\s*;)[^\\n]*");
-    std::smatch m;
-    if (!std::regex_search(text, m, line))
-    {
-        FatalErrorInFunction
-            << file << ": no line 'couplingInterval N;' to set" << exit(FatalError);
-    }
-    std::ostringstream with;
-    with << m.prefix().str() << m[1].str() << m[2].str() << n << m[3].str()
-        << "   // DEM steps (scaleCase -parcels)" << m.suffix().str();
-    caseFiles::writeText(file, with.str());
+    warnOfNarrowBeds(read(coupling), minCells, growth.narrowestCell);
 }
 
 
@@ -563,21 +622,16 @@ void Foam::caseScaler::warnOfNarrowBeds
     const scalar narrowestCell
 ) const
 {
-    // the parcel's diameter from the DEM's radius or diameter variable (a
-    // pass that keeps every value)
+    // the parcel's diameter from the DEM's radius or diameter variable
     scalar parcel = 0;
-    rewriteDemParameters
-    (
-        [&](const demParameter& p)
+    for (const demParameter& p : demParameters())
+    {
+        if (p.roles.found("particle") && p.dims == dimLength)
         {
-            if (p.roles.found("particle") && p.dims == dimLength)
-            {
-                if (p.name == "radius") parcel = 2*p.value;
-                if (p.name == "diameter") parcel = p.value;
-            }
-            return p.value;
+            if (p.name == "radius") parcel = 2*p.value;
+            if (p.name == "diameter") parcel = p.value;
         }
-    );
+    }
     if (!(parcel > 0)) return;
     const word model(coupling.getOrDefault<word>("voidFractionModel", word::null));
     if (model == "centroid" && parcel > narrowestCell)

@@ -9,7 +9,7 @@
 #include "caseFiles.H"
 #include "OSspecific.H"
 #include "primitiveEntry.H"
-#include "smoothingDefaults.H"
+#include "modelCoefficients.H"
 #include "pointField.H"
 #include <cmath>
 #include <regex>
@@ -350,98 +350,75 @@ void Foam::fluidCoarsener::coarsenControl(const scalar growth) const
 
 void Foam::fluidCoarsener::coarsenLengths(const scalar cellGrowth) const
 {
-    // line by line, the part before a // comment, so that the file keeps
-    // its layout and comments
-    const fileName file(dir_/"constant"/"couplingProperties");
-    std::istringstream in(caseFiles::readText(file));
-    std::ostringstream out;
-    const std::regex length("\\b(bandwidth|voxelSize)(\\s+)([-+0-9.eE]+)(\\s*;)");
-    for (std::string line; std::getline(in, line);)
+    const dictionary coupling(caseFiles::readDict(dir_/"constant"/"couplingProperties"));
+    const bool twoD = coupling.getOrDefault<bool>("twoDimensional", false);
+    for (const word& model : modelCoefficients::models())
     {
-        const size_t comment = line.find("//");
-        std::string code(line.substr(0, comment));
-        std::string done;
-        std::smatch m;
-        while (std::regex_search(code, m, length))
-        {
-            const scalar v = std::stod(m[3].str());
-            // voxels follow the parcels; a smoothing length the cells only
-            // when asked
-            const scalar f =
-                m[1].str() == "voxelSize" ? h_ : relativeSmoothing_ ? cellGrowth : 1;
-            std::ostringstream num;
-            num.precision(15);
-            num << v*f;
-            done += m.prefix().str() + m[1].str() + m[2].str() + num.str() + m[4].str();
-            code = m.suffix().str();
-            Info<< "    couplingProperties " << m[1].str().c_str() << ": " << v << " -> "
-                << v*f << " m" << (f == 1 ? " (the fine case's smoothing length)" : "") << nl;
-        }
-        out << done << code << (comment == std::string::npos ? "" : line.substr(comment)) << '\n';
+        const word name(model + "Coeffs");
+        coarsenCoefficients(model, coupling.findDict(name), {name}, cellGrowth, twoD);
     }
-    if (!relativeSmoothing_)
-    {
-        out << keepSmoothingLength(caseFiles::readDict(file), cellGrowth);
-    }
-    caseFiles::writeText(file, out.str());
 }
 
 
-std::string Foam::fluidCoarsener::keepSmoothingLength
+void Foam::fluidCoarsener::coarsenCoefficients
 (
-    const dictionary& coupling,
-    const scalar cellGrowth
-)
+    const word& model,
+    const dictionary* coeffs,
+    const wordList& path,
+    const scalar cellGrowth,
+    const bool twoD
+) const
 {
-    // entries appended to the file: OpenFOAM merges a repeated
-    // sub-dictionary into the first, so only these keys change
-    const bool twoD = coupling.getOrDefault<bool>("twoDimensional", false);
-    std::ostringstream out;
-    out.precision(6);
-    auto kernel = [&](const dictionary* d, const std::string& where)
+    // voxels follow the parcels; the smoothing keeps its length in metres
+    // (relative to the cells when asked)
+    const fileName file(dir_/"constant"/"couplingProperties");
+    std::string where;
+    for (const word& w : path) where += w + "/";
+    for (const modelCoefficients::coefficient& c : modelCoefficients::of(model))
     {
-        if (d && d->found("bandwidth")) return std::string();
-        const scalar b = d
-          ? d->getOrDefault<scalar>
-            (
-                "bandwidthOverCellSize", smoothingDefaults::kernelBandwidthOverCellSize()
-            )
-          : smoothingDefaults::kernelBandwidthOverCellSize();
-        Info<< "    " << where.c_str() << "bandwidthOverCellSize: " << b << " -> "
-            << b/cellGrowth << " (the largest cell " << cellGrowth << " times the fine"
-            << " one's size: the fine case's smoothing length)" << nl;
-        std::ostringstream e;
-        e.precision(6);
-        e << "kernelCoeffs { bandwidthOverCellSize " << b/cellGrowth << "; }";
-        return e.str();
-    };
-    out << "\n// scaleCase -parcels: smoothing over the fine case's lengths (merged into the"
-        << " entries above)\n" << kernel(coupling.findDict("kernelCoeffs"), "kernelCoeffs ")
-        << "\n";
-    const dictionary* diffusion = coupling.findDict("diffusionCoeffs");
-    std::string inner;
-    if (!(diffusion && diffusion->found("bandwidth")))
-    {
-        const scalar a = diffusion
-          ? diffusion->getOrDefault<scalar>
-            (
-                "coefficient", smoothingDefaults::diffusionCoefficient(twoD)
-            )
-          : smoothingDefaults::diffusionCoefficient(twoD);
-        const scalar aNew = a/sqr(cellGrowth);
-        Info<< "    diffusionCoeffs coefficient: " << a << " -> " << aNew
-            << " (D = a (cell size)^2: the fine case's smoothing length)" << nl;
-        std::ostringstream e;
-        e.precision(6);
-        e << "coefficient " << aNew << "; ";
-        inner += e.str();
+        const bool given = coeffs && coeffs->found(c.keyword);
+        wordList at(path);
+        at.append(c.keyword);
+        scalar f = 1, value = 0;
+        std::string why;
+        switch (c.what)
+        {
+            case modelCoefficients::particleLength:
+                if (!given) continue;
+                f = h_;
+                why = " m (with the parcels)";
+                break;
+            case modelCoefficients::smoothingLength:
+                if (!given) continue;
+                f = relativeSmoothing_ ? cellGrowth : 1;
+                why = relativeSmoothing_ ? " m (with the cells)" : " m (the fine case's smoothing length)";
+                break;
+            case modelCoefficients::perCellSize:
+            case modelCoefficients::perCellArea:
+                // a length in metres given instead is kept as it is
+                if (relativeSmoothing_ || (!given && !c.fallback)) continue;
+                if (coeffs && c.replacedBy.size() && coeffs->found(c.replacedBy)) continue;
+                f = c.what == modelCoefficients::perCellSize ? 1/cellGrowth : 1/sqr(cellGrowth);
+                why = " (the largest cell " + Foam::name(cellGrowth) + " times the fine one's size:"
+                    " the fine case's smoothing length)";
+                break;
+            case modelCoefficients::splitModel:
+                if (given)
+                {
+                    const word inner(coeffs->get<word>(c.keyword));
+                    wordList innerPath(path);
+                    innerPath.append(inner + "Coeffs");
+                    coarsenCoefficients(inner, coeffs->findDict(inner + "Coeffs"), innerPath, cellGrowth, twoD);
+                }
+                continue;
+            case modelCoefficients::number:
+                continue;
+        }
+        value = given ? coeffs->get<scalar>(c.keyword) : c.fallback(twoD);
+        Info<< "    couplingProperties " << where.c_str() << c.keyword << ": " << value << " -> "
+            << value*f << why.c_str() << nl;
+        if (f != 1) caseFiles::setEntry(file, at, caseFiles::number(value*f), "scaleCase -parcels");
     }
-    if (diffusion && diffusion->getOrDefault<word>("initial", "centroid") == "kernel")
-    {
-        inner += kernel(diffusion->findDict("kernelCoeffs"), "diffusionCoeffs/kernelCoeffs ");
-    }
-    if (inner.size()) out << "diffusionCoeffs { " << inner << " }\n";
-    return out.str();
 }
 
 

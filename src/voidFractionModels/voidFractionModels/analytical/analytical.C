@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 #include "analytical.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoefficients.H"
 #include "mathematicalConstants.H"
 
 namespace Foam
@@ -14,6 +15,12 @@ namespace voidFractionModels
 {
     defineTypeNameAndDebug(analytical, 0);
     addToRunTimeSelectionTable(voidFractionModel, analytical, dictionary);
+    // what scaleCase needs to know of the coefficients
+    const modelCoefficients::add analyticalCoefficients
+    (
+        analytical::typeName,
+        {}
+    );
 }
 }
 

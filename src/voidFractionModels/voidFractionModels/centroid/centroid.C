@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 #include "centroid.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoefficients.H"
 
 namespace Foam
 {
@@ -13,6 +14,12 @@ namespace voidFractionModels
 {
     defineTypeNameAndDebug(centroid, 0);
     addToRunTimeSelectionTable(voidFractionModel, centroid, dictionary);
+    // what scaleCase needs to know of the coefficients
+    const modelCoefficients::add centroidCoefficients
+    (
+        centroid::typeName,
+        {}
+    );
 }
 }
 

@@ -7,6 +7,7 @@
 #include "diffusion.H"
 #include "smoothingDefaults.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoefficients.H"
 #include "laplacianScheme.H"
 #include "snGradScheme.H"
 #include "surfaceInterpolationScheme.H"
@@ -22,6 +23,20 @@ namespace voidFractionModels
 {
     defineTypeNameAndDebug(diffusion, 0);
     addToRunTimeSelectionTable(voidFractionModel, diffusion, dictionary);
+    // what scaleCase needs to know of the coefficients
+    const modelCoefficients::add diffusionCoefficients
+    (
+        diffusion::typeName,
+        {
+            {"bandwidth", modelCoefficients::smoothingLength, nullptr, ""},
+            {
+                "coefficient", modelCoefficients::perCellArea,
+                smoothingDefaults::diffusionCoefficient, "bandwidth"
+            },
+            {"nSteps", modelCoefficients::number, nullptr, ""},
+            {"initial", modelCoefficients::splitModel, nullptr, ""}
+        }
+    );
 }
 }
 

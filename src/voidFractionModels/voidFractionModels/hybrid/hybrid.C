@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 #include "hybrid.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoefficients.H"
 
 namespace Foam
 {
@@ -13,6 +14,14 @@ namespace voidFractionModels
 {
     defineTypeNameAndDebug(hybrid, 0);
     addToRunTimeSelectionTable(voidFractionModel, hybrid, dictionary);
+    // what scaleCase needs to know of the coefficients
+    const modelCoefficients::add hybridCoefficients
+    (
+        hybrid::typeName,
+        {
+            {"subGridResolution", modelCoefficients::number, nullptr, ""}
+        }
+    );
 }
 }
 

@@ -7,6 +7,7 @@
 #include "kernel.H"
 #include "smoothingDefaults.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoefficients.H"
 #include "kernelConstants.H"
 
 namespace Foam
@@ -15,6 +16,19 @@ namespace voidFractionModels
 {
     defineTypeNameAndDebug(kernel, 0);
     addToRunTimeSelectionTable(voidFractionModel, kernel, dictionary);
+    // what scaleCase needs to know of the coefficients
+    const modelCoefficients::add kernelCoefficients
+    (
+        kernel::typeName,
+        {
+            {"bandwidth", modelCoefficients::smoothingLength, nullptr, ""},
+            {
+                "bandwidthOverCellSize", modelCoefficients::perCellSize,
+                [](bool) { return smoothingDefaults::kernelBandwidthOverCellSize(); }, "bandwidth"
+            },
+            {"cutoff", modelCoefficients::number, nullptr, ""}
+        }
+    );
 }
 }
 

@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 #include "voxel.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoefficients.H"
 
 namespace Foam
 {
@@ -13,6 +14,17 @@ namespace voidFractionModels
 {
     defineTypeNameAndDebug(voxel, 0);
     addToRunTimeSelectionTable(voidFractionModel, voxel, dictionary);
+    // what scaleCase needs to know of the coefficients
+    const modelCoefficients::add voxelCoefficients
+    (
+        voxel::typeName,
+        {
+            {"voxelSize", modelCoefficients::particleLength, nullptr, ""},
+            {"voxelsPerSide", modelCoefficients::number, nullptr, ""},
+            {"voxelsPerDiameter", modelCoefficients::number, nullptr, ""},
+            {"voxelsPerCell", modelCoefficients::number, nullptr, ""}
+        }
+    );
 }
 }
 

@@ -12,6 +12,8 @@ model runs with its defaults; voxel also at Kalderon et al.'s 50 voxels per samp
 side and at 10 voxels per particle diameter. Five rounds over all models;
 the median over the rounds is reported.
 
+Writes benchmarks/speed/results/table.md (docs/performance.md shows it).
+
 usage: benchmarks/speed.py [N]   (N particles, default 200000)
 """
 import math
@@ -86,11 +88,18 @@ for rnd in range(ROUNDS):
         runs.setdefault(("tetrahedral", label), []).append(run(tet, label, model, coeffs, 3 if slow else 9))
     print("round %d of %d done" % (rnd + 1, ROUNDS), flush=True)
 
-print("| mesh | model | median time per call (s) | particles/s | time / centroid | conservation |")
-print("|---|---|---|---|---|---|")
+lines = ["| mesh | model | median time per call (s) | particles/s | time / centroid | conservation |",
+         "|---|---|---|---|---|---|"]
 for (mesh, label), reps in runs.items():
     base = runs[(mesh, "centroid")]
     t = statistics.median(r["median"] for r in reps)
     ratio = statistics.median(r["median"] / b["median"] for r, b in zip(reps, base))
-    print("| %s | %s | %.5f | %.3e | %.2f | %.0e |" % (mesh, label, t, N_PARTICLES / t, ratio,
-                                                     max(r["conservation"] for r in reps)))
+    lines.append("| %s | %s | %.5f | %.3e | %.2f | %.0e |" % (mesh, label, t, N_PARTICLES / t, ratio,
+                                                             max(r["conservation"] for r in reps)))
+print("\n".join(lines))
+results = os.path.join(ROOT, "benchmarks", "speed", "results")
+os.makedirs(results, exist_ok=True)
+with open(os.path.join(results, "table.md"), "w") as f:
+    f.write("%d particles, solid fraction %.3f, %d^3 cells of %.2f d_max\n\n%s\n"
+            % (N_PARTICLES, solid, ncell, L / ncell / (2 * rmax), "\n".join(lines)))
+print("wrote %s" % os.path.join(results, "table.md"))

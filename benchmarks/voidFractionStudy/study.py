@@ -22,7 +22,10 @@ after Kalderon et al.'s calibration study (its sections 4 and 5).
    k^3 times (8e3 to 1e6 particles), every model at its defaults, X = 3:
    time per particle against particle count.
 4. Writes build/study/results.csv and the plots pareto.png, smoothness.png,
-   optimalParameter.png, scaling.png; prints the README table for X = 3.
+   optimalParameter.png, scaling.png; prints the README table for X = 3. A
+   partial run (a flag below) starts from the committed results/results.csv
+   when build/study has none. Copy results.csv and the plots to results/
+   and run tables.py for docs/performance.md's tables.
 
 1b. Friction (Kalderon et al.'s Table 4 b and c samples): L1.2b, L1.2c, L3b, L3c
    with friction 0.1 and 0.3, compressed at a constant strain rate until
@@ -41,10 +44,11 @@ after Kalderon et al.'s calibration study (its sections 4 and 5).
    friction 0, 0.1, 0.3, compressed to P_STOP; every model over its
    parameter over X (full study and --cu6).
 
-usage: study.py [--quick] [--2d] [--friction] [--bimodal] [--cu6] [--scale]
+usage: study.py [--quick] [--l12a] [--2d] [--friction] [--bimodal] [--cu6] [--scale]
        --quick:    3 repeats instead of 10, tiles up to 3^3, no friction,
                    Cu = 6 or bimodal series; about a minute once the
                    packings exist
+       --l12a:     only L1.2a over X and on 2 ranks (its rows replaced)
        --2d:       only the 2D disk sample (its rows in results.csv replaced)
        --friction: only the friction series (its rows replaced)
        --bimodal:  only the bimodal samples (their rows replaced)
@@ -54,6 +58,7 @@ usage: study.py [--quick] [--2d] [--friction] [--bimodal] [--cu6] [--scale]
 import csv
 import math
 import os
+import shutil
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -63,8 +68,10 @@ from foamCase import ROOT, box_block_mesh, new_case, sh  # noqa: E402
 QUICK = "--quick" in sys.argv
 ONLY_2D = "--2d" in sys.argv
 ONLY_SCALE = "--scale" in sys.argv
+ONLY_L12A = "--l12a" in sys.argv
 WORK = os.path.join(ROOT, "build", "study")
 CSV = os.path.join(WORK, "results.csv")
+COMMITTED = os.path.join(HERE, "results", "results.csv")
 REPEAT = 3 if QUICK else 10
 TILES = (1, 2, 3) if QUICK else (1, 2, 3, 4, 5)
 
@@ -399,7 +406,10 @@ def series_table(rows, names):
 
 
 def replace_rows(samples):
-    """Drop the CSV rows of the given samples (they are about to be rerun)."""
+    """Drop the CSV rows of the given samples (they are about to be rerun);
+    a partial run starts from the committed results."""
+    if not os.path.exists(CSV) and os.path.exists(COMMITTED):
+        shutil.copyfile(COMMITTED, CSV)
     kept = [r for r in load() if r["sample"] not in samples] if os.path.exists(CSV) else []
     if kept:
         with open(CSV, "w", newline="") as f:
@@ -548,6 +558,14 @@ def main():
         disk_study()
         rows = load()
         print(table(rows, nearest_X(rows, DISKS, 3), DISKS, SWEEPS_2D))
+        return
+    if ONLY_L12A:
+        replace_rows({"L1.2a"})
+        dump, L, r_max, count = sphere_study("L1.2a", *make_packing("L1.2a", 8262, 1.17e-3, 1.2, 0.0))
+        log("X = 3 on 2 MPI ranks")
+        run_case("L1.2a-X3-np2", dump, L, 3, r_max, default_runs(), nprocs=2)
+        rows = load()
+        print(table(rows, plots(rows)))
         return
     if ONLY_SCALE:
         replace_rows({r["sample"] for r in load() if r["sample"].startswith("tile")})

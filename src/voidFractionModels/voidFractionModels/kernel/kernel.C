@@ -124,7 +124,8 @@ void Foam::voidFractionModels::kernel::distribute
     combineOverGroup(b_, maxEqOp<scalar>());
 
     // a kernel that reaches no cell centre (bandwidth far below the cell
-    // size) leaves the particle in its cell
+    // size) leaves the particle in its cell: both paths open the row with
+    // the centre cell, set to 1 here once the combined sum is known
     auto normalise = [&](const label p, const bool spreadNow)
     {
         scalar s = 1;

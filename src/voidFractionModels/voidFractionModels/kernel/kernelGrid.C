@@ -95,27 +95,27 @@ Foam::label Foam::voidFractionModels::kernel::axisWindow
 (
     const direction d,
     const scalar x,
-    const scalar rc
-)
+    const scalar rc,
+    label& first
+) const
 {
     const scalarList& g = locator().gridPlanes(d);
     if (x + rc < g.first() || x - rc > g.last())
     {
-        firstIndex_[d] = 0;
+        first = 0;
         return 0;
     }
     const scalar inv = locator().invSpacing(d);
-    if (inv > 0) return uniformWindow(g, inv, x, rc, firstIndex_[d]);
+    if (inv > 0) return uniformWindow(g, inv, x, rc, first);
 
     // the intervals holding the ends of the reach, then the centres
     const scalarList& xc = gridCentres_[d];
     const scalar from = max(x - rc, g.first());
     const scalar to = min(x + rc, g.last());
-    label first = locator().interval(d, from);
+    first = locator().interval(d, from);
     first += (xc[first] < from);
     label end = locator().interval(d, to) + 1;
     end -= (xc[end - 1] > to);
-    firstIndex_[d] = first;
     return max(end - first, label(0));
 }
 
@@ -125,14 +125,15 @@ void Foam::voidFractionModels::kernel::axisFactors
     const scalar x[3],
     const scalar b,
     const scalar rc,
-    const axisMirrors& mirrors
+    const axisMirrors& mirrors,
+    axisWindows& w
 )
 {
     label n[3];
     label total = 0;
     for (direction d = 0; d < 3; ++d)
     {
-        n[d] = axisWindow(d, x[d], rc);
+        n[d] = axisWindow(d, x[d], rc, w.first[d]);
         total += n[d]*(1 + mirrors.n[d]);
     }
     const scalar invB2 = 1/sqr(b);
@@ -143,9 +144,9 @@ void Foam::voidFractionModels::kernel::axisFactors
     scalar* e = exponents_.data();
     for (direction d = 0; d < 3; ++d)
     {
-        distSqr_[d].setSize(n[d]);
-        scalar* dd = distSqr_[d].data();
-        const scalar* xi = gridCentres_[d].cdata() + firstIndex_[d];
+        w.distSqr[d].setSize(n[d]);
+        scalar* dd = w.distSqr[d].data();
+        const scalar* xi = gridCentres_[d].cdata() + w.first[d];
         const FixedList<scalar, 2>& m = mirrors.at[d];
         for (label k = 0; k < n[d]; ++k)
         {
@@ -160,9 +161,9 @@ void Foam::voidFractionModels::kernel::axisFactors
     const scalar* gauss = exponents_.cdata();
     for (direction d = 0; d < 3; ++d)
     {
-        factor_[d].setSize(n[d]);
-        scalar* f = factor_[d].data();
-        const scalar* h = gridWidths_[d].cdata() + firstIndex_[d];
+        w.factor[d].setSize(n[d]);
+        scalar* f = w.factor[d].data();
+        const scalar* h = gridWidths_[d].cdata() + w.first[d];
         for (label k = 0; k < n[d]; ++k)
         {
             scalar sum = *gauss++;
@@ -181,8 +182,11 @@ inline void Foam::voidFractionModels::kernel::finishRow
     const scalar sum
 )
 {
-    // nothing positive here: the row is the centre cell alone, where the
-    // fallback of distribute finds it
+    // nothing positive here: the row keeps the centre cell alone, at 0.
+    // Whether the particle reached any centre is known only once its sums
+    // are combined over the ranks and images that hold it, so the slot is
+    // kept now, while the row is open, and distribute's normalisation sets
+    // it to 1 if the combined sum is 0
     rows().truncateEntries(sum > 0 ? k0 + m : k0);
     if (sum == 0 && centreCells()[p] >= 0) rows().append(centreCells()[p], 0);
     sums_[p] = sum;
@@ -346,18 +350,18 @@ void Foam::voidFractionModels::kernel::gridWeights
 )
 {
     const scalar x[3] = {c.x(), c.y(), c.z()};
-    axisFactors(x, b, rc, mirrors);
-    const label n[3] = {factor_[0].size(), factor_[1].size(), factor_[2].size()};
-    const label first[3] = {firstIndex_[0], firstIndex_[1], firstIndex_[2]};
+    axisWindows& w = windows_;
+    axisFactors(x, b, rc, mirrors, w);
+    const label n[3] = {w.factor[0].size(), w.factor[1].size(), w.factor[2].size()};
 
     // room for the whole box of cells; the ball keeps about half of it
     const label k0 = rows().extend(n[0]*n[1]*n[2]);
     scalar sum = 0;
     const ballWindow window
     {
-        locator(), first, n,
-        {factor_[0].cdata(), factor_[1].cdata(), factor_[2].cdata()},
-        {distSqr_[0].cdata(), distSqr_[1].cdata(), distSqr_[2].cdata()}, sqr(rc)
+        locator(), w.first, n,
+        {w.factor[0].cdata(), w.factor[1].cdata(), w.factor[2].cdata()},
+        {w.distSqr[0].cdata(), w.distSqr[1].cdata(), w.distSqr[2].cdata()}, sqr(rc)
     };
     const label m = ballRows<>(window, rows().cellsData() + k0, rows().fractionsData() + k0, sum);
     finishRow(p, k0, m, sum);

@@ -59,17 +59,23 @@ def table(header, rows):
                      ["| " + " | ".join(r) + " |" for r in rows]) + "\n"
 
 
+def default_cells(found, dim):
+    """Per default run: its name, (row, [error, smoothness, time / PCM]) with the paper's in brackets"""
+    pcm = float(found["centroid"]["median_s"])
+    for run, name in DEFAULTS[dim]:
+        r, model = found[run], found[run]["model"]
+        error = "0 (reference)" if run == "reference" else bracket(g(r["error_percent"]),
+                                                                    PAPER_ERROR[dim].get(model))
+        yield run, name, r, [error, g(r["smoothness"], 4),
+                             bracket(ratio(float(r["median_s"])/pcm), PAPER_TIME[dim].get(model))]
+
+
 def l12a(rows):
     one, x = nearest(rows, "L1.2a", 2.8)
     two, _ = nearest(rows, "L1.2a", x, 2)
-    pcm = float(one["centroid"]["median_s"])
     out = []
-    for run, name in DEFAULTS["3D"]:
-        r, model = one[run], one[run]["model"]
-        error = "0 (reference)" if run == "reference" else bracket(g(r["error_percent"]),
-                                                                    PAPER_ERROR["3D"].get(model))
-        out.append([name, error, g(r["smoothness"], 4), "%.0e" % float(r["conservation"]), g(r["median_s"]),
-                    bracket(ratio(float(r["median_s"])/pcm), PAPER_TIME["3D"].get(model)),
+    for run, name, r, (error, smooth, relative) in default_cells(one, "3D"):
+        out.append([name, error, smooth, "%.0e" % float(r["conservation"]), g(r["median_s"]), relative,
                     g(two[run]["median_s"]) if run in two else "-"])
     return table(["model", "error (%)", "smoothness (1/m)", "conservation", "time (s)", "time / PCM",
                   "2 ranks: time (s)"], out)
@@ -85,14 +91,7 @@ def samples(rows):
 
 def disks(rows):
     one, _ = nearest(rows, "G2D", 3.0)
-    pcm = float(one["centroid"]["median_s"])
-    out = []
-    for run, name in DEFAULTS["2D"]:
-        r, model = one[run], one[run]["model"]
-        error = "0 (reference)" if run == "reference" else bracket(g(r["error_percent"]),
-                                                                    PAPER_ERROR["2D"].get(model))
-        out.append([name, error, g(r["smoothness"], 4),
-                    bracket(ratio(float(r["median_s"])/pcm), PAPER_TIME["2D"].get(model))])
+    out = [[name] + cells for _, name, _, cells in default_cells(one, "2D")]
     return table(["model", "error (%)", "smoothness (1/m)", "time / PCM"], out)
 
 

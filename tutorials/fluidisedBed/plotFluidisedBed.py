@@ -10,6 +10,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 from bedData import bed_weight, pressure_drop, pressure_panel, read_vtk, snapshots, step as step_of
+from weightShares import weight_shares  # on the path bedData sets
 
 weight = bed_weight(".")
 t, dp = pressure_drop(".")
@@ -21,6 +22,11 @@ print(f"{model}: time-averaged pressure drop (t > 0.4 s) {mean:.1f} Pa, bed weig
       f"({100*(mean/weight - 1):+.1f} %), fluctuation {100*fluctuation:.1f} %")
 with open("fluidisedBed.result", "w") as f:
     f.write(f"dp_error {abs(mean/weight - 1)}\nfluctuation {fluctuation}\n")
+    # where the weight rests (runs that wrote the distributor's contact force)
+    shares = weight_shares(".", 0.4)
+    if shares:
+        f.write(f"fluid_share {shares[0]}\ndistributor_share {shares[1]}\n")
+        print(f"    the beads' weight carried by the gas {shares[0]:.3f}, the distributor {shares[1]:.3f} (t > 0.4 s)")
 
 files = snapshots(".")[-4:]   # none in a run shorter than a write interval
 fig = plt.figure(figsize=(10, 4.6))

@@ -8,7 +8,8 @@ measurement looks) and of all particles (depth-averaged), after the
 start-up. Writes particleSpeed_H<NNN>.csv (x_mm,speed_m_s: the front wall;
 depth_averaged_m_s beside it), spoutedBed.result (the mean absolute
 difference from each measured profile, the spout's width, the fountain's
-height, the pressure drop over the weight, the particle count) and
+height, the pressure drop over the weight, the particle count, and the
+shares of the weight the gas, the floor and the walls carry) and
 spoutedBed.png (a snapshot coloured by speed, the profiles with the
 measured points)."""
 import os
@@ -22,7 +23,8 @@ import numpy as np
 PROJECT = os.environ.get("VFM_PROJECT_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
 sys.path[:0] = [os.path.join(PROJECT, "tutorials"), os.path.join(PROJECT, "tutorials", "fluidisedBed")]
 import caseProperties  # noqa: E402
-from bedData import bed_weight, pressure_drop, read_vtk, snapshots  # noqa: E402
+from bedData import bed_weight, pressure_drop, read_vtk, snapshots, step  # noqa: E402
+from weightShares import weight_shares  # noqa: E402
 
 START_UP = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
 H0 = 0.2                    # m, the settled bed (Yue et al. 2020)
@@ -38,8 +40,14 @@ weight = bed_weight(".", 2*half*depth)
 t, dp = pressure_drop(".")
 late = t > START_UP
 result = {"dp_vs_weight": float(np.mean(dp[late])/weight) if late.any() else float("nan")}
+# where the weight rests (runs that wrote the walls' contact forces)
+shares = weight_shares(".", START_UP)
+if shares:
+    result.update(fluid_share=shares[0], floor_share=shares[1], walls_share=shares[2])
+    print("    the beads' weight carried by the gas %.3f, the floor %.3f, the walls %.3f (t > %g s)"
+          % (shares + (START_UP,)))
 
-files = [(int(f.rsplit("_", 1)[1].split(".")[0])*dt, f) for f in snapshots(".")]
+files = [(step(f)*dt, f) for f in snapshots(".")]
 used = [f for s, f in files if s > START_UP]
 
 

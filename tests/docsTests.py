@@ -82,7 +82,7 @@ def test_result_tables():
     sys.path.insert(0, os.path.join(ROOT, "docs"))
     import tables
     blocks, problems = tables.process(write=False)
-    check("generated tables found (the check sees them)", blocks >= 16, "(%d)" % blocks)
+    check("generated tables found (the check sees them)", blocks >= 18, "(%d)" % blocks)
     for p in problems:
         check(p, False)
     check("every generated table equals its source", not problems, "(%d of %d differ)" % (len(problems), blocks))
@@ -129,6 +129,18 @@ def test_study_tables_from_csv():
           "| kernel (b/ds 0.4) | %.3g [1.7] |" % float(kernel["error_percent"]) in parts[0])
 
 
+def test_compression_tables_from_csv():
+    print("the biaxial compression tables written from their committed CSV files")
+    here = os.path.join(ROOT, "benchmarks", "coarseGrainingPrecision")
+    spec = importlib.util.spec_from_file_location("compression", os.path.join(here, "compression.py"))
+    compression = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(compression)
+    for dim, name in ((2, "compression2d_size1"), (3, "compression3d_size0.75")):
+        rows = compression.load_results(os.path.join(here, "results", name + ".csv"))
+        check("%s: the .md is the CSV's table (%d samples)" % (name, len(rows)), len(rows) >= 25 and
+              compression.table_text(rows, dim) == open(os.path.join(here, "results", name + ".md")).read())
+
+
 def test_spouted_bed_summary_from_results():
     print("the spouted bed's summary.csv rows against each run's recorded .result")
     results = os.path.join(ROOT, "benchmarks", "spoutedBed", "results")
@@ -147,7 +159,8 @@ def test_spouted_bed_summary_from_results():
 
 def main():
     checks.run([test_links, test_readme_results_in_docs, test_result_tables, test_coarse_bed_tables_from_runs,
-                test_study_tables_from_csv, test_spouted_bed_summary_from_results], sys.argv[1:])
+                test_study_tables_from_csv, test_compression_tables_from_csv,
+                test_spouted_bed_summary_from_results], sys.argv[1:])
     return checks.summary("docs")
 
 

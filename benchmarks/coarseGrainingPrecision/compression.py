@@ -311,6 +311,33 @@ def print_summary(rows, dim):
     return table
 
 
+def short_e(x, digits):
+    """5.325e5 rather than 5.325e+05"""
+    mantissa, exponent = ("%.*e" % (digits - 1, x)).split("e")
+    return "%se%d" % (mantissa, int(exponent))
+
+
+def table_text(rows, dim):
+    """The docs' table of a results CSV's rows (docs/coarseGraining.md)"""
+    table = summary(rows, dim)
+    initial = {t["h"]: t for t in summary(rows, dim, "initial")}
+    unit, power = ("N/m", "") if dim == 2 else ("N", "\u00b2")
+    header = ["h", "disks" if dim == 2 else "spheres", "porosity", "mean G (%s)" % unit, "h%s G\u2081" % power,
+              "err", "standard error of the mean", "variance", "err of G\u2080"] + (["paper"] if dim == 2 else [])
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    for t in table:
+        first = t["h"] == 1.0
+        paper = paper_error(t["h"])
+        cells = ["%g" % t["h"], "{:,}".format(t["particles"]), "%.3f" % t["porosity"], short_e(t["mean"], 4),
+                 "\u2014" if first else short_e(t["theory"], 4), "\u2014" if first else "%.2f %%" % (100 * t["err"]),
+                 "%.2f %%" % (100 * t["sem"]), short_e(t["var"], 2),
+                 "\u2014" if first else "%.2f %%" % (100 * initial[t["h"]]["err"])]
+        if dim == 2:
+            cells.append("\u2014" if paper is None else "%.2f %%" % (100 * paper))
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
 def plot(table, dim, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -369,6 +396,9 @@ def main():
                      row["porosity"], row["wall_s"], elapsed, elapsed / n * (len(todo) - n)),
                   flush=True)
     table = print_summary(load_results(out), a.dim)
+    with open(out[:-len(".csv")] + ".md", "w") as f:
+        f.write(table_text(load_results(out), a.dim))
+    print("wrote", out[:-len(".csv")] + ".md")
     if a.plot and table:
         path = os.path.join(a.results, "compression%dd_size%g.png" % (a.dim, a.size))
         plot(table, a.dim, path)

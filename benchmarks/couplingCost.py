@@ -10,8 +10,9 @@ reports the median of each over the couplings after the first tenth (and
 over the first and last fifth of those: the DEM's cost falls as the bed
 expands), the coupling overhead (exchange + void fraction + forces) relative
 to the DEM,
-and the most particles one rank held. Writes build/couplingCost/cost.csv and
-cost.md.
+and the most particles one rank held. Writes cost.csv and cost.md (the table
+docs/performance.md shows) to build/couplingCost and
+benchmarks/couplingCost/results.
 
 usage: benchmarks/couplingCost.py [model] [END] [ranks...]
        (default: analytical 0.1 1 2)
@@ -74,10 +75,8 @@ def main():
     def overhead(med):
         return (med["exchange"] + med["voidFraction"] + med["forces"])/med["DEM"]
 
-    header = "| ranks | particles | most on a rank | couplings | " + " | ".join(
-        "%s ms" % s for s in STAGES) + " | overhead / DEM | DEM ms first / last fifth " \
-        "| overhead first / last fifth |"
-    lines = [header, "|" + "---|" * (len(STAGES) + 7)]
+    lines = ["| ranks | most particles on a rank | DEM | exchange | void fraction | forces | fluid | overhead / DEM "
+             "| DEM first / last fifth | overhead first / last fifth |", "|" + "---|" * 10]
     with open(os.path.join(work, "cost.csv"), "w") as csv:
         csv.write("ranks,particles,maxHeld,couplings," + ",".join(STAGES)
                   + ",overhead,demFirst,demLast,overheadFirst,overheadLast\n")
@@ -85,14 +84,18 @@ def main():
             csv.write("%d,%d,%d,%d,%s,%.4f,%.6g,%.6g,%.4f,%.4f\n" % (
                 n, total, held, count, ",".join("%.6g" % med[s] for s in STAGES),
                 overhead(med), first["DEM"], last["DEM"], overhead(first), overhead(last)))
-            lines.append("| %d | %d | %d | %d | %s | %.1f %% | %.2f / %.2f | %.1f / %.1f %% |" % (
-                n, total, held, count, " | ".join("%.2f" % (1e3*med[s]) for s in STAGES),
+            lines.append("| %d | {:,} | %s | %.1f %% | %.2f / %.2f | %.1f / %.1f %% |".format(held) % (
+                n, " | ".join("%.2f" % (1e3*med[s]) for s in STAGES),
                 100*overhead(med), 1e3*first["DEM"], 1e3*last["DEM"],
                 100*overhead(first), 100*overhead(last)))
+    results_dir = os.path.join(ROOT, "benchmarks", "couplingCost", "results")
+    os.makedirs(results_dir, exist_ok=True)
     with open(os.path.join(work, "cost.md"), "w") as md:
-        md.write("\n".join(lines) + "\n")
+        md.write("%s, %g s, milliseconds per coupling (medians)\n\n%s\n" % (model, end, "\n".join(lines)))
+    for name in ("cost.csv", "cost.md"):
+        shutil.copy(os.path.join(work, name), results_dir)
     print("\n".join(lines))
-    print("median seconds per coupling after the first tenth; written to %s" % work)
+    print("median milliseconds per coupling after the first tenth; written to %s" % results_dir)
 
 
 if __name__ == "__main__":

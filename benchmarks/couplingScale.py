@@ -432,7 +432,7 @@ def main():
     parser.add_argument("--short", action="store_true", help="the 10^4 bed, a few couplings, into build/")
     args = parser.parse_args()
     if args.short:
-        args.beds, args.couplings, args.exchange_bed, args.exchange_ranks = "1e4", 8, "1e4", "2,3"
+        args.beds, args.couplings, args.exchange_bed, args.exchange_ranks = "1e4", 30, "1e4", "2,3"
     beds = args.beds.split(",")
     for bed in beds + [args.exchange_bed]:
         if bed not in BEDS:

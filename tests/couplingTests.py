@@ -599,6 +599,55 @@ def test_riser():
     check_coupling_log("riser, 2 ranks", os.path.join(case, "log.pimpleDEMFoam"), 0.9)
 
 
+def check_carried_run(run):
+    """The spouted bed benchmark's carry.py: a run saved on one machine and
+    restored on another continues from the same particles and fields; only
+    the contacts' tangential history restarts."""
+    sys.path.insert(0, os.path.join(ROOT, "benchmarks", "spoutedBed"))
+    import carry
+    archive, moved = os.path.join(WORK, "spoutedBed-carried.tar.xz"), os.path.join(WORK, "spoutedBed-carried")
+    shutil.rmtree(moved, ignore_errors=True)
+    script = os.path.join(ROOT, "benchmarks", "spoutedBed", "carry.py")
+    rc, out = sh("/usr/bin/python3 %s save %s %s && /usr/bin/python3 %s restore %s %s"
+                 % (script, run, archive, script, archive, moved), WORK, check=False)
+    check("carry.py: saved and restored", rc == 0, out[-800:] if rc else "")
+    if rc:
+        return
+    t = carry.latest_time(run)
+    check("carried: the restored run's last written time is the run's (%g s)" % t, carry.latest_time(moved) == t)
+    name = carry.time_dir(run, t)
+    states = []
+    for case in (run, moved):
+        carry.liggghts(case, carry.HEAD + "read_restart ../%s/DEM.restart\ninclude in.parameters\n"
+                       "include in.settings\nwrite_data check.data\n" % name)
+        states.append(carry.read_data(os.path.join(case, "DEM", "check.data")))
+    check("carried: positions, velocities, spins, diameters and densities bit for bit",
+          all(np.array_equal(a, b) for a, b in zip(*states)))
+    fields = [f for f in sorted(os.listdir(os.path.join(run, name)))
+              if f != "DEM.restart" and os.path.isfile(os.path.join(run, name, f))]
+    differ = [f for f in fields if f != "DEM.forces" and
+              open(os.path.join(run, name, f), "rb").read() != open(os.path.join(moved, name, f), "rb").read()]
+    check("carried: the fluid fields byte for byte (%s)" % " ".join(fields), not differ, "differ: %s" % differ)
+    # both continue by one write interval
+    logs = []
+    for case in (run, moved):
+        edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+\S+;", "endTime %g;" % (t + 0.06))
+        rc, text = sh("timeout 600 pimpleDEMFoam > log.continued 2>&1", case, check=False)
+        check("carried: %s continued to %g s" % (os.path.basename(case), t + 0.06), rc == 0, text[-400:])
+        logs.append(coupling_forces(os.path.join(case, "log.continued")))
+    if len(logs[0]) == len(logs[1]) >= 100:
+        first = [abs(a[1][2] - b[1][2])/abs(a[1][2]) for a, b in zip(*logs)][0]
+        check("carried: the first coupling's vertical fluid force within 1e-4 of the original run's",
+              first < 1e-4, "(%.2e)" % first)
+        check("carried: every parcel coupled at every coupling", all(a[0] == b[0] == 2747 for a, b in zip(*logs)))
+    else:
+        check("carried: as many couplings in both runs, at least 100", False,
+              "(%d and %d)" % (len(logs[0]), len(logs[1])))
+    check("carried: the particle files continue the run's numbering",
+          [os.path.basename(f) for f in particleVtk.files(moved)][-1:] ==
+          [os.path.basename(f) for f in particleVtk.files(run)][-1:])
+
+
 def test_spouted_bed():
     print("spoutedBed tutorial at h = 4: the parcels, the fluid by the bed's rule, the jet, 2 ranks = serial")
     case = copy_tutorial("spoutedBed", "spoutedBed")
@@ -624,6 +673,7 @@ def test_spouted_bed():
     rise, still = float(np.mean(v[over_jet, 2])), float(np.mean(np.linalg.norm(v[at_walls], axis=1)))
     check("the jet: parcels over the channel rise at more than 0.25 m/s and 3 times the speed of those "
           "by the side walls", rise > 0.25 and rise > 3*still, "(%.3f and %.4f m/s)" % (rise, still))
+    check_carried_run(run)
     # 2 ranks = serial from the same packing, solvers converged to round-off
     edit(os.path.join(run, "system", "fvSolution"), r"tolerance 1e-8; relTol [0-9.]+;", "tolerance 1e-14; relTol 0;")
     edit(os.path.join(run, "system", "controlDict"), r"^endTime\s+\S+;", "endTime 0.03;")

@@ -13,12 +13,14 @@ run is done when they agree within --spout and --annulus m/s, or when it has
 used --budget hours of wall-clock time (then it is recorded as it stands and
 the .result says how far the halves are apart); otherwise it runs --extend
 seconds more. A run stopped by anything continues from its last written time
-when this is started again; finished runs are recorded by record.py in
+when this is started again; --save keeps the runs' last written times in
+carried/ (carry.py), and a machine without a run's folder continues it from
+there (to be committed while a run outlives the machine); finished runs are recorded by record.py in
 results/ (profiles, picture, .result, summary.csv) and not run again.
 
 usage: run.py [--runs analytical:4,kernel:4,analytical:3,...] [--ranks 2]
               [--end 5] [--extend 2.5] [--budget 8] [--spout 0.05]
-              [--annulus 0.02] [--rerecord]
+              [--annulus 0.02] [--rerecord] [--save]
        h = 1 runs the 175,800 beads themselves.
 """
 import argparse
@@ -30,12 +32,14 @@ import subprocess
 import sys
 import time
 
+from carry import latest_time, restore, save
 from record import wall_seconds
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 TUTORIAL = os.path.join(ROOT, "tutorials", "spoutedBed")
 WORK = os.path.join(ROOT, "build", "spoutedBed")
+CARRIED = os.path.join(HERE, "carried")  # runs saved to continue on another machine
 START_UP = 1.0      # s, before the averages start (the jet's ramp and the spout's opening)
 ENV = dict(os.environ, VFM_PROJECT_DIR=ROOT)
 
@@ -53,27 +57,6 @@ def parse_runs(text):
 def case_dir(model, h):
     top = os.path.join(WORK, "%s_h%g" % (model, h))
     return top, os.path.join(top, "fine" if h == 1 else "parcels_h%g" % h)
-
-
-def numbered(root):
-    found = set()
-    for d in os.listdir(root):
-        try:
-            found.add(float(d))
-        except ValueError:
-            pass
-    return found
-
-
-def latest_time(case):
-    """The last time the run wrote whole (the DEM's state, written last, and
-    every rank's fields), 0 if none."""
-    if not os.path.isdir(case):
-        return 0.0
-    times = {t for t in numbered(case) if t > 0 and os.path.isfile(os.path.join(case, "%g" % t, "DEM.forces"))}
-    for root in glob.glob(os.path.join(case, "processor*")):
-        times &= numbered(root)
-    return max(times) if times else 0.0
 
 
 def set_end(case, end):
@@ -112,18 +95,28 @@ def analyse(case):
     return read_result(case)
 
 
+def carried_archive(model, h):
+    return os.path.join(CARRIED, "%s_h%g.tar.xz" % (model, h))
+
+
 def run_one(model, h, a):
     top, case = case_dir(model, h)
     done = os.path.join(top, "recorded")
     if os.path.isfile(done) and not a.rerecord:
         print("%s h = %g: recorded earlier (remove %s to run it again)" % (model, h, done))
         return
+    carried = carried_archive(model, h)
     if latest_time(case) == 0.0:
-        print("%s h = %g: setting up and running the first %g s" % (model, h, a.end))
         shutil.rmtree(top, ignore_errors=True)
         outputs = shutil.ignore_patterns("parcels_h*", "fine", "log.*", "*.png", "*.csv", "*.result", "0")
         shutil.copytree(TUTORIAL, top, ignore=lambda d, names: outputs(d, names) if d == TUTORIAL else set())
-        subprocess.run(["./Allrun", "%g" % h, model, "%g" % a.end, str(a.ranks)], cwd=top, env=ENV, check=True)
+        if os.path.isfile(carried):
+            print("%s h = %g: continuing the run saved in %s" % (model, h, carried))
+            restore(carried, case)
+        else:
+            print("%s h = %g: setting up and running the first %g s" % (model, h, a.end))
+            subprocess.run(["./Allrun", "%g" % h, model, "%g" % a.end, str(a.ranks)], cwd=top, env=ENV,
+                           check=True)
     while True:
         end = float(re.search(r"(?m)^endTime\s+(\S+);", open(os.path.join(case, "system", "controlDict")).read())
                     .group(1))
@@ -156,11 +149,18 @@ def main():
     p.add_argument("--spout", type=float, default=0.05, help="m/s, halves' agreement in the spout")
     p.add_argument("--annulus", type=float, default=0.02, help="m/s, halves' agreement in the annulus")
     p.add_argument("--rerecord", action="store_true", help="run and record runs recorded earlier again")
+    p.add_argument("--save", action="store_true", help="save the runs' last written times in carried/, "
+                   "from where a run continues on a machine that does not have it")
     a = p.parse_args()
     if a.end <= START_UP or a.extend <= 0 or a.ranks < 1 or a.budget <= 0:
         sys.exit("run.py: --end must exceed the %g s start-up; --extend, --ranks and --budget must be positive"
                  % START_UP)
     runs = parse_runs(a.runs)
+    if a.save:
+        os.makedirs(CARRIED, exist_ok=True)
+        for model, h in runs:
+            save(case_dir(model, h)[1], carried_archive(model, h))
+        return
     os.makedirs(WORK, exist_ok=True)
     for i, (model, h) in enumerate(runs):
         print("== run %d of %d: %s, h = %g" % (i + 1, len(runs), model, h), flush=True)

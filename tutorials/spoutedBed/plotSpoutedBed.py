@@ -47,34 +47,70 @@ if shares:
     print("    the beads' weight carried by the gas %.3f, the floor %.3f, the walls %.3f (t > %g s)"
           % (shares + (START_UP,)))
 
-files = [(step(f)*dt, f) for f in snapshots(".")]
-used = [f for s, f in files if s > START_UP]
-
-
-def averaged(snaps):
-    """Time-averaged speed profiles {(H/H0, 'front' or 'depth'): per bin} of
-    the snapshots, and the fountain height of each."""
-    sums = {(h, where): np.zeros(len(centres)) for h in HEIGHTS for where in ("front", "depth")}
-    counts = {key: np.zeros(len(centres)) for key in sums}
-    tops = []
-    for f in snaps:
-        x, r, v = read_vtk(f)
-        speed = np.linalg.norm(v, axis=1)
-        for h in HEIGHTS:
-            layer = np.abs(x[:, 2] - h*H0) < d
-            for where, pick in (("front", layer & (x[:, 1] < r + d)), ("depth", layer)):
-                k = np.clip(np.digitize(x[pick, 0], edges) - 1, 0, len(centres) - 1)
-                np.add.at(sums[(h, where)], k, speed[pick])
-                np.add.at(counts[(h, where)], k, 1)
-        # the fountain: the height below which 99 % of the particles over the inlet lie
-        core = np.abs(x[:, 0]) < 0.012
-        tops.append(np.quantile(x[core, 2], 0.99) if core.any() else np.nan)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return {key: np.where(counts[key] > 0, sums[key]/np.maximum(counts[key], 1), np.nan) for key in sums}, tops
-
-
 edges = np.arange(-half, half + 1e-9, BIN)
 centres = 0.5*(edges[1:] + edges[:-1])
+WHERE = ("front", "depth")
+CACHE = "snapshotProfiles.npz"
+
+
+def snapshot_sums(path):
+    """One snapshot's speed sums and particle counts [height, front or depth,
+    bin], and its fountain: the height below which 99 % of the particles over
+    the inlet lie."""
+    x, r, v = read_vtk(path)
+    speed = np.linalg.norm(v, axis=1)
+    sums = np.zeros((len(HEIGHTS), len(WHERE), len(centres)))
+    counts = np.zeros_like(sums)
+    for i, h in enumerate(HEIGHTS):
+        layer = np.abs(x[:, 2] - h*H0) < d
+        for j, pick in enumerate((layer & (x[:, 1] < r + d), layer)):
+            k = np.clip(np.digitize(x[pick, 0], edges) - 1, 0, len(centres) - 1)
+            np.add.at(sums[i, j], k, speed[pick])
+            np.add.at(counts[i, j], k, 1)
+    core = np.abs(x[:, 0]) < 0.012
+    return sums, counts, np.quantile(x[core, 2], 0.99) if core.any() else np.nan
+
+
+def snapshot_table():
+    """{time step: (sums, counts, fountain)} of every snapshot after the
+    start-up. Kept in snapshotProfiles.npz, so that a run continued elsewhere
+    without its earlier snapshots still averages over them."""
+    table = {}
+    if os.path.isfile(CACHE):
+        kept = np.load(CACHE)
+        if kept["edges"].shape == edges.shape and np.allclose(kept["edges"], edges) and kept["diameter"] == d:
+            table = {int(s): (a, c, f) for s, a, c, f in zip(kept["steps"], kept["sums"], kept["counts"],
+                                                             kept["fountain"])}
+    added = False
+    for f in snapshots("."):
+        if step(f)*dt > START_UP and step(f) not in table:
+            table[step(f)] = snapshot_sums(f)
+            added = True
+    if added and table:
+        steps = sorted(table)
+        np.savez_compressed(CACHE, edges=edges, diameter=d, steps=np.array(steps),
+                            sums=np.array([table[s][0] for s in steps]),
+                            counts=np.array([table[s][1] for s in steps]),
+                            fountain=np.array([table[s][2] for s in steps]))
+    return {s: table[s] for s in sorted(table) if s*dt > START_UP}
+
+
+def averaged(steps):
+    """Time-averaged speed profiles {(H/H0, 'front' or 'depth'): per bin} of
+    the snapshots, and the fountain height of each."""
+    sums = sum(table[s][0] for s in steps)
+    counts = sum(table[s][1] for s in steps)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        mean = np.where(counts > 0, sums/np.maximum(counts, 1), np.nan)
+    return ({(h, where): mean[i, j] for i, h in enumerate(HEIGHTS) for j, where in enumerate(WHERE)},
+            [table[s][2] for s in steps])
+
+
+files = [(step(f)*dt, f) for f in snapshots(".")]
+table = snapshot_table()
+used = list(table)
+if not used:
+    sys.exit("    no particle snapshot after the %g s start-up to average" % START_UP)
 profiles, fountain = averaged(used)
 for h in HEIGHTS:
     with open("particleSpeed_H%03d.csv" % round(100*h), "w") as out:

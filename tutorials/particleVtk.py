@@ -1,8 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """The particle files pimpleDEMFoam writes, VTK/particles_<step>.vtp (VTK XML
 polydata, inline ASCII or base64: the centres as points, point data radius,
-id and velocity); runs made before the XML files read as legacy
-VTK/particles_<step>.vtk."""
+id and velocity), and legacy VTK/particles_<step>.vtk files."""
 import base64
 import glob
 import os

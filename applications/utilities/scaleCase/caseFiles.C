@@ -106,6 +106,14 @@ namespace
         }
         return p.size();
     }
+
+    // The text with a line added at its end
+    std::string withLine(const std::string& text, const std::string& line)
+    {
+        std::string out(text);
+        if (out.size() && out.back() != '\n') out += '\n';
+        return out + line + "\n";
+    }
 }
 
 
@@ -192,12 +200,7 @@ std::string Foam::caseFiles::setEntry
             // the missing sub-dictionaries, inside the last one found
             std::string entry(key + " " + value + ";");
             for (label d = path.size() - 2; d >= depth; --d) entry = path[d] + " { " + entry + " }";
-            if (depth == 0)
-            {
-                std::string tail(text);
-                if (tail.size() && tail.back() != '\n') tail += '\n';
-                return tail + entry + comment + "\n";
-            }
+            if (depth == 0) return withLine(text, entry + comment);
             return text.substr(0, p[to].begin) + entry + " " + text.substr(p[to].begin);
         }
         from = block + 2;
@@ -217,9 +220,7 @@ std::string Foam::caseFiles::setEntry
             const size_t at = p[to].begin;
             return text.substr(0, at) + key + " " + value + "; " + text.substr(at);
         }
-        std::string tail(text);
-        if (tail.size() && tail.back() != '\n') tail += '\n';
-        return tail + key + " " + value + ";" + comment + "\n";
+        return withLine(text, key + " " + value + ";" + comment);
     }
     size_t end = k + 1;
     while (end < p.size() && p[end].kind != ';') ++end;

@@ -184,6 +184,72 @@ def test_fast_against_general():
               sum(1 for a in a2 if 1e-9 < 1 - a < 0.999) > 100)
 
 
+def step_mesh(n, cut):
+    """blockMesh body of the cube [0, L]^3 in n^3 cells without the cells
+    x < cut[0] L/n, z < cut[1] L/n (all y): three blocks whose planes are
+    one tensor grid with cut[0] x n x cut[1] holes; walls all round."""
+    h = L/n
+    xs, zs = cut[0]*h, cut[1]*h
+    boxes = [((0, 0, zs), (xs, L, L)), ((xs, 0, 0), (L, L, zs)), ((xs, 0, zs), (L, L, L))]
+    vertices, blocks = [], []
+    for lo, hi in boxes:
+        corners = [(lo[0], lo[1], lo[2]), (hi[0], lo[1], lo[2]), (hi[0], hi[1], lo[2]), (lo[0], hi[1], lo[2]),
+                   (lo[0], lo[1], hi[2]), (hi[0], lo[1], hi[2]), (hi[0], hi[1], hi[2]), (lo[0], hi[1], hi[2])]
+        ids = []
+        for c in corners:
+            if c not in vertices:
+                vertices.append(c)
+            ids.append(vertices.index(c))
+        cells = [round((hi[d] - lo[d])/h) for d in range(3)]
+        blocks.append("hex (%s) (%d %d %d) simpleGrading (1 1 1)" % ((" ".join(map(str, ids)),) + tuple(cells)))
+    return ("scale 1;\nvertices (%s);\nblocks ( %s );\nboundary ( );\ndefaultPatch { name walls; type wall; }\n"
+            % (" ".join("(%.17g %.17g %.17g)" % v for v in vertices), " ".join(blocks)))
+
+
+def test_grid_with_holes():
+    print("a tensor grid with holes (a step cut out of a box) against the general path")
+    n, cut = 8, (4, 3)
+    xs, zs = cut[0]*L/n, cut[1]*L/n
+    holes = cut[0]*n*cut[1]
+
+    def to_step(x):
+        """distance from the centre to the cut-out block (0 inside it)"""
+        return math.hypot(max(x[0] - xs, 0), max(x[2] - zs, 0))
+    c, r = random_spheres(900, 0.0005, 0.0016, LO, HI, seed=12)
+    inside = [(x, ri) for x, ri in zip(c, r) if to_step(x) >= ri]
+    crossing = [(x, ri) for x, ri in zip(c, r) if 0 < to_step(x) < ri]
+    check("spheres wholly in the stepped mesh and spheres crossing the step",
+          len(inside) > 300 and len(crossing) > 30, "(%d and %d)" % (len(inside), len(crossing)))
+    grid = new_case(os.path.join(WORK, "stepGrid"), step_mesh(n, cut))
+    rot = new_case(os.path.join(WORK, "stepRotated"), step_mesh(n, cut))
+    sh("transformPoints -rotate '((1 0 0) (0.8 0.6 0))'", rot)
+    rotate = lambda p: (0.8*p[0] - 0.6*p[1], 0.6*p[0] + 0.8*p[1], p[2])
+    write_dump(os.path.join(grid, "one.dump"), [inside[0][0]], [inside[0][1]])
+    rc, out = run_model(grid, "one.dump", "analytical")
+    check("the stepped mesh is taken as an 8 x 8 x 8 grid with %d holes" % holes,
+          "tensor-product mesh 8 x 8 x 8 with %d holes" % holes in out,
+          "" if rc else "(%s)" % [l for l in out.splitlines() if "particleCellLocator" in l])
+    spheres = [x for x, _ in inside], [ri for _, ri in inside]
+    for model in ("analytical", "centroid", "voxel", "hybrid", "kernel", "diffusion"):
+        field_checks("stepped grid", grid, *spheres, model)
+    for name, group in (("wholly inside", inside), ("crossing the step", crossing)):
+        fields = []
+        for case, move in ((grid, lambda p: p), (rot, rotate)):
+            write_dump(os.path.join(case, "step.dump"), [move(x) for x, _ in group], [ri for _, ri in group])
+            rc, _ = run_model(case, "step.dump", "analytical")
+            fields.append(read_scalar_field(os.path.join(case, "0", "voidfraction")) if rc == 0 else None)
+        if None not in fields:
+            near("analytical, spheres %s: grid with holes = general path (rotated), max |d alpha|" % name,
+                 max(abs(a - b) for a, b in zip(*fields)), 0, 1e-11)
+    # scotch parts of the step: grids with holes of their own, or general meshes
+    with open(os.path.join(grid, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                "numberOfSubdomains 2;\nmethod scotch;\n")
+    write_dump(os.path.join(grid, "p.dump"), *spheres)
+    for model in ("analytical", "kernel"):
+        serial_vs_parallel("stepped grid, scotch", grid, "p.dump", model, 1e-12)
+
+
 def test_cyclic():
     print("cyclic patches: spheres beyond one side land on the other")
     cyc = {"xmin": "type cyclic; neighbourPatch xmax;", "xmax": "type cyclic; neighbourPatch xmin;"}
@@ -443,7 +509,7 @@ def test_centre_search():
 
 
 def main():
-    checks.run([test_closed_forms, test_thin_neighbour, test_meshes, test_fast_against_general, test_cyclic,
+    checks.run([test_closed_forms, test_thin_neighbour, test_meshes, test_fast_against_general, test_grid_with_holes, test_cyclic,
                 test_alpha_min, test_parallel, test_dump_series, test_previous_step, test_centre_search, test_liggghts_in_process,
                 test_bad_input], sys.argv[1:])
     return checks.summary("models")

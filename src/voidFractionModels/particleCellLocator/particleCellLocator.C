@@ -41,7 +41,8 @@ bool Foam::particleCellLocator::detectTensorGrid()
         grid_[d] = uniqueCoordinates(std::move(v), tol);
     }
     const label nx = grid_[0].size() - 1, ny = grid_[1].size() - 1, nz = grid_[2].size() - 1;
-    bool ok = (nx*ny*nz == cells.size());
+    // holes allowed, but not a sparse grid (an index over mostly nothing)
+    bool ok = (nx*ny*nz >= cells.size() && nx*ny*nz <= 2*cells.size());
     if (ok)
     {
         ijkCell_.setSize(nx*ny*nz, -1);
@@ -68,6 +69,7 @@ bool Foam::particleCellLocator::detectTensorGrid()
             {
                 ok = false; break;
             }
+            if (ijkCell_[i + nx*(j + ny*k)] != -1) { ok = false; break; }
             ijkCell_[i + nx*(j + ny*k)] = celli;
             cellIjk_[3*celli] = i;
             cellIjk_[3*celli + 1] = j;
@@ -82,6 +84,7 @@ bool Foam::particleCellLocator::detectTensorGrid()
     }
     else
     {
+        holes_ = nx*ny*nz - cells.size();
         for (direction d = 0; d < 3; ++d)
         {
             const scalarList& g = grid_[d];
@@ -105,6 +108,7 @@ bool Foam::particleCellLocator::detectTensorGrid()
 Foam::particleCellLocator::particleCellLocator(const fvMesh& mesh)
 :
     mesh_(mesh),
+    holes_(0),
     invSpacing_{0, 0, 0},
     minWidth_(GREAT)
 {
@@ -113,7 +117,9 @@ Foam::particleCellLocator::particleCellLocator(const fvMesh& mesh)
     {
         Info<< "particleCellLocator: tensor-product mesh "
             << grid_[0].size() - 1 << " x " << grid_[1].size() - 1 << " x "
-            << grid_[2].size() - 1 << ", cells found by index arithmetic" << endl;
+            << grid_[2].size() - 1;
+        if (holes_) Info<< " with " << holes_ << " holes";
+        Info<< ", cells found by index arithmetic" << endl;
     }
     // polyMesh::findCell builds the tetrahedra's base points on first use,
     // synchronised over the processors: build them now on every rank (some

@@ -74,10 +74,9 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     if (cutMask == 0)
     {
         // whole in one cell: no volume to compute
-        if (low[0] >= 0 && low[1] >= 0 && low[2] >= 0)
-        {
-            rows().append(locator().gridCell(low[0], low[1], low[2]), 1.0);
-        }
+        const label celli = (low[0] >= 0 && low[1] >= 0 && low[2] >= 0)
+            ? locator().gridCell(low[0], low[1], low[2]) : -1;
+        if (celli >= 0) rows().append(celli, 1.0);
         return true;
     }
     const label nCut = cut[0] + cut[1] + cut[2];
@@ -85,10 +84,9 @@ bool Foam::sphereWalkVoidFraction::splitOnGrid
     const scalar perVolume = 1/particleVolume(R);
     auto add = [&](const label i, const label j, const label k, const scalar volume)
     {
-        if (volume > 0 && i >= 0 && j >= 0 && k >= 0)
-        {
-            rows().append(locator().gridCell(i, j, k), volume*perVolume);
-        }
+        // a piece beyond the grid's ends or in a hole is not in this mesh
+        const label celli = (volume > 0 && i >= 0 && j >= 0 && k >= 0) ? locator().gridCell(i, j, k) : -1;
+        if (celli >= 0) rows().append(celli, volume*perVolume);
     };
     scalar piece[8];
     sphereOverlap::planeSplit(R, offset, cut, piece);
@@ -159,9 +157,10 @@ void Foam::sphereWalkVoidFraction::appendLatticeSplit
         {
             const sphereOverlap::vec3 lo{gx[i], gy[j], gz[k]}, hi{gx[i + 1], gy[j + 1], gz[k + 1]};
             const long n = table ? table->count(c3, R, lo, hi) : sphereOverlap::latticeCount(c3, R, L, lo, hi);
-            if (n)
+            const label celli = locator().gridCell(i, j, k);
+            if (n && celli >= 0)
             {
-                cells_.append(locator().gridCell(i, j, k));
+                cells_.append(celli);
                 counts_.append(label(n));
             }
         }

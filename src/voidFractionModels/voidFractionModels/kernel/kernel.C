@@ -43,6 +43,7 @@ Foam::voidFractionModels::kernel::kernel
     bandwidth_(0),
     bandwidthOverCellSize_(0),
     cutoff_(positiveCoeff("cutoff", 3)),
+    gridPath_(false),
     uniform_(false),
     factorised_(false)
 {
@@ -69,7 +70,8 @@ Foam::voidFractionModels::kernel::kernel
     forAll(cellSize_, celli) cellSize_[celli] = cellSize(celli);
     maxCellSize_ = returnReduce(max(cellSize_), maxOp<scalar>());
     collectWalls(mesh, coeffs().lookupOrDefault<bool>("reflectAtWalls", true));
-    uniform_ = locator().isTensorGrid()
+    gridPath_ = locator().isTensorGrid() && !locator().hasHoles();
+    uniform_ = gridPath_
      && locator().invSpacing(0) > 0 && locator().invSpacing(1) > 0 && locator().invSpacing(2) > 0;
     // 4 cutoff^2 within the exponentials' clamp
     factorised_ = uniform_ && cutoff_ <= kernelConstants::maxFactorisedCutoff;
@@ -77,7 +79,7 @@ Foam::voidFractionModels::kernel::kernel
     {
         for (direction d = 0; d < 3; ++d) spacing_[d] = 1/locator().invSpacing(d);
     }
-    if (locator().isTensorGrid())
+    if (gridPath_)
     {
         for (direction d = 0; d < 3; ++d)
         {
@@ -150,7 +152,7 @@ void Foam::voidFractionModels::kernel::distribute
             if (b_[p] > 0 && !(uniform_ && blockRows(p, p0)))
             {
                 const scalar rc = cutoff_*b_[p];
-                if (locator().isTensorGrid())
+                if (gridPath_)
                 {
                     gridWeights(p, x[p], b_[p], rc, findMirrors(x[p], centreCells()[p], rc));
                 }

@@ -386,7 +386,39 @@ def table_text(rows, umf_ref):
             lines.append("| %s | %g | %s | %s | %.3f | %s | %+.1f %% | %.0f | %s |"
                          % (r["model"], r["h"], r["law"], r["mesh"], r["umf"], vs_fine,
                             100 * r["umf_vs_wen_yu"], r["wall_per_s"], speedup))
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines + verdict_lines(rows)) + "\n"
+
+
+AIM_DP, AIM_UMF = 0.05, 0.10    # the pressure drop and Umf against the fine bed's
+
+
+def verdict_lines(rows):
+    """Which h holds, per model and coarse mesh: the cubic parcels' bubbling
+    speed-up and pressure drop and their ramp's Umf, each against the fine
+    bed's, and whether both are within AIM_DP and AIM_UMF."""
+    key = lambda r: (r["model"], r["mesh"], r["h"])
+    cubic = [r for r in rows if r["law"] == "cubic" and r["mesh"] != "fine"]
+    bubbling = {key(r): r for r in cubic if r["test"] == "bubbling"}
+    umf = {key(r): r["umf_vs_fine"] for r in cubic if r["test"] == "ramp"}
+    factors = sorted({k[2] for k in bubbling if k in umf})
+    if not factors:
+        return []
+    lines = ["", "Against the aim of the pressure drop within %g %% and Umf within %g %% of the fine bed's "
+             "(speed-ups from the bubbling runs):" % (100 * AIM_DP, 100 * AIM_UMF), "",
+             "| model | mesh | " + " | ".join("h = %g" % h for h in factors) + " |", "|---" * (2 + len(factors)) + "|"]
+    for model, mesh in sorted({k[:2] for k in bubbling}, key=lambda k: (k[1] != "coarsened", k)):
+        cells = []
+        for h in factors:
+            r, u = bubbling.get((model, mesh, h)), umf.get((model, mesh, h))
+            if r is None or u is None:
+                cells.append("")
+                continue
+            dp_ok, umf_ok = abs(r["dp_vs_fine"]) <= AIM_DP, abs(u) <= AIM_UMF
+            word = "holds" if dp_ok and umf_ok else "dp misses" if umf_ok else "Umf misses" if dp_ok else "no"
+            cells.append("%s: %s×, dp %+.1f %%, Umf %+.1f %%" % (word, ("%.0f" if r["speedup"] >= 10 else "%.1f")
+                                                              % r["speedup"], 100 * r["dp_vs_fine"], 100 * u))
+        lines.append("| `%s` | %s | %s |" % (model, mesh, " | ".join(cells)))
+    return lines
 
 
 def write_table(rows, umf_ref, where):

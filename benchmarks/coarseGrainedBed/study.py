@@ -34,10 +34,15 @@ results/summary.csv, one row per coarse run of every bed: the pressure
 drop, Umf, bed height and fluid fraction profile against the fine bed's
 (same bed, same model; the coarse profile interpolated to the fine bed's
 cell layers) and the speed-up in wall-clock time per simulated second.
+--shares makes bubbling runs of their own (results/<bed>/shares/, not in the
+table) for where the bed's weight rests over t > SETTLE s: the gas's
+vertical force on the particles (the solver's log), the distributor's and
+the side walls' contact forces (DEM/post/wallForces.txt); --report writes
+them to shares.md.
 
 usage: study.py [--bed tutorial|wide] [--mesh fine|coarsened|bed] [--ranks 1]
                 [--models analytical,kernel,centroid] [--factors 1,1.5,2,3]
-                [--laws cubic,exact] [--end 2.0] [--ramp] [--jobs 2]
+                [--laws cubic,exact] [--end 2.0] [--ramp | --shares] [--jobs 2]
                 [--report] [--results DIR]
 """
 import argparse
@@ -63,6 +68,7 @@ from couplingTests import edit  # noqa: E402
 _cwd = os.getcwd()
 os.chdir(TUTORIAL)      # bedData reads the fluid and the beads' density where it is imported:
 import bedData  # noqa: E402,I100   the same in every run (parcels keep the beads' density)
+from weightShares import weight_shares  # noqa: E402
 os.chdir(_cwd)
 
 WORK = os.path.join(ROOT, "build", "coarseGrainedBed")
@@ -183,10 +189,10 @@ def solve(case, ranks):
         shell("reconstructPar -fields '(alpha)'", case, os.path.join(case, "log.reconstructPar"))
 
 
-def run_one(model, h, law, ramp, end, results, bed="tutorial", mesh="fine", ranks=1):
+def run_one(model, h, law, ramp, end, results, bed="tutorial", mesh="fine", ranks=1, store="runs"):
     results, work = bed_dirs(bed, results)
     name = run_name(model, h, law, ramp, mesh)
-    case = os.path.join(work, name)
+    case = os.path.join(work, name if store == "runs" else store + "_" + name)
     source = source_case(bed, work)
     make_case(case, source, model, h, law, ramp, end, mesh, ranks)
     if h == 1:
@@ -204,8 +210,8 @@ def run_one(model, h, law, ramp, end, results, bed="tutorial", mesh="fine", rank
     result = dict(name=name, model=model, h=h, law=law if h != 1 else "fine", ramp=ramp, bed=bed,
                   mesh=mesh if h != 1 else "fine", ranks=ranks, end=end, wall_per_s=wall / end)
     result.update(analyse_ramp(case) if ramp else analyse_bubbling(case))
-    os.makedirs(os.path.join(results, "runs"), exist_ok=True)
-    with open(os.path.join(results, "runs", name + ".json"), "w") as f:
+    os.makedirs(os.path.join(results, store), exist_ok=True)
+    with open(os.path.join(results, store, name + ".json"), "w") as f:
         json.dump(result, f, indent=1)
     return result
 
@@ -225,7 +231,12 @@ def analyse_bubbling(case):
             heights.append(volume_quantile(x[:, 2], r ** 3, 0.95))
     z, alpha = alpha_profile(case)
     half = len(settled) // 2
-    return dict(weight=weight, dp_mean=mean, dp_error=mean / weight - 1, dp_fluctuation=fluct,
+    shares = weight_shares(case, SETTLE)
+    if shares:
+        extra = dict(fluid_share=shares[0], distributor_share=shares[1], walls_share=shares[2])
+    else:
+        extra = {}
+    return dict(extra, weight=weight, dp_mean=mean, dp_error=mean / weight - 1, dp_fluctuation=fluct,
                 dp_halves=[sum(settled[:half]) / half / weight - 1,
                            sum(settled[half:]) / (len(settled) - half) / weight - 1],
                 bed_height=sum(heights) / len(heights) if heights else float("nan"),
@@ -288,8 +299,8 @@ def wen_yu_umf():
     return re_mf * mu / (rho * d)
 
 
-def finished(results):
-    runs = os.path.join(results, "runs")
+def finished(results, store="runs"):
+    runs = os.path.join(results, store)
     if not os.path.isdir(runs):
         return {}
     return {f[:-5]: json.load(open(os.path.join(runs, f))) for f in sorted(os.listdir(runs))
@@ -357,6 +368,7 @@ def report(results):
         write_table(rows, umf_ref, where)
         plot(runs, umf_ref, where)
         summary += summary_rows(rows, bed)
+        write_shares(finished(where, "shares"), where)
     if not summary:
         sys.exit("study.py: no finished runs in %s" % os.path.join(results, "runs"))
     with open(os.path.join(results, "summary.csv"), "w") as f:
@@ -419,6 +431,21 @@ def verdict_lines(rows):
                                                               % r["speedup"], 100 * r["dp_vs_fine"], 100 * u))
         lines.append("| `%s` | %s | %s |" % (model, mesh, " | ".join(cells)))
     return lines
+
+
+def write_shares(runs, where):
+    """shares.md of a bed: where its weight rests in the runs made for it (--shares)"""
+    if not runs:
+        return
+    lines = ["| model | h | mesh | gas (solver's force) | distributor (contacts) | side walls (contacts) | sum "
+             "| dp / bed weight |", "|---" * 8 + "|"]
+    for r in sorted(runs.values(), key=lambda r: (r["model"], r["h"], r["mesh"])):
+        total = r["fluid_share"] + r["distributor_share"] + r["walls_share"]
+        lines.append("| %s | %g | %s | %.3f | %.3f | %.3f | %.3f | %.3f |"
+                     % (r["model"], r["h"], r["mesh"], r["fluid_share"], r["distributor_share"],
+                        r["walls_share"], total, 1 + r["dp_error"]))
+    with open(os.path.join(where, "shares.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
 
 
 def write_table(rows, umf_ref, where):
@@ -492,6 +519,9 @@ def main():
     p.add_argument("--end", type=float, default=2.0)
     p.add_argument("--ramp", action="store_true")
     p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--shares", action="store_true",
+                   help="bubbling runs apart from the table's (results/<bed>/shares/) for where the weight rests: "
+                   "the gas, the distributor and the side walls (shares.md)")
     p.add_argument("--report", action="store_true")
     p.add_argument("--results", default=RESULTS)
     a = p.parse_args()
@@ -507,7 +537,10 @@ def main():
     if not end > SETTLE:
         sys.exit("study.py: --end must exceed the start-up of %g s that the averages leave out" % SETTLE)
     where, work = bed_dirs(a.bed, a.results)
-    done = finished(where)
+    store = "shares" if a.shares else "runs"
+    if a.shares and a.ramp:
+        sys.exit("study.py: --shares records bubbling runs, not a ramp")
+    done = finished(where, store)
     todo = []
     for model in a.models.split(","):
         for h in factors:
@@ -519,7 +552,7 @@ def main():
           % (a.bed, a.mesh, a.ranks, "s" if a.ranks > 1 else "", len(todo), end), flush=True)
     start = time.time()
     with ProcessPoolExecutor(max_workers=a.jobs) as pool:
-        futures = {pool.submit(run_one, m, h, law, a.ramp, end, a.results, a.bed, a.mesh, a.ranks): (m, h, law)
+        futures = {pool.submit(run_one, m, h, law, a.ramp, end, a.results, a.bed, a.mesh, a.ranks, store): (m, h, law)
                    for m, h, law in todo}
         for n, fut in enumerate(as_completed(futures), 1):
             m, h, law = futures[fut]

@@ -107,6 +107,10 @@ def test_coarse_bed_tables_from_runs():
         check("%s bed: runs recorded" % bed, len(runs) >= 10, "(%d)" % len(runs))
         table = open(os.path.join(where, "table.md")).read()
         check("%s bed: table.md is its runs' table" % bed, study.table_text(study.compare(runs, umf), umf) == table)
+        shares = study.finished(where, "shares")
+        if shares:
+            check("%s bed: shares.md is its --shares runs' table" % bed,
+                  study.shares_text(shares) == open(os.path.join(where, "shares.md")).read())
 
 
 def test_study_tables_from_csv():

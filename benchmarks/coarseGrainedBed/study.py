@@ -435,8 +435,12 @@ def verdict_lines(rows):
 
 def write_shares(runs, where):
     """shares.md of a bed: where its weight rests in the runs made for it (--shares)"""
-    if not runs:
-        return
+    if runs:
+        with open(os.path.join(where, "shares.md"), "w") as f:
+            f.write(shares_text(runs))
+
+
+def shares_text(runs):
     lines = ["| model | h | mesh | gas (solver's force) | distributor (contacts) | side walls (contacts) | sum "
              "| dp / bed weight |", "|---" * 8 + "|"]
     for r in sorted(runs.values(), key=lambda r: (r["model"], r["h"], r["mesh"])):
@@ -444,8 +448,7 @@ def write_shares(runs, where):
         lines.append("| %s | %g | %s | %.3f | %.3f | %.3f | %.3f | %.3f |"
                      % (r["model"], r["h"], r["mesh"], r["fluid_share"], r["distributor_share"],
                         r["walls_share"], total, 1 + r["dp_error"]))
-    with open(os.path.join(where, "shares.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
+    return "\n".join(lines) + "\n"
 
 
 def write_table(rows, umf_ref, where):

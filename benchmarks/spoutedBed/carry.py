@@ -132,7 +132,9 @@ def forces_header(path):
 def kept(case, t_name, path):
     """Whether the archive keeps this file of the case (path relative to it)."""
     parts = path.split(os.sep)
-    if parts[0] == "VTK" or path.endswith(".restart") or parts[-1].endswith(".png"):
+    # not the snapshots, restart files, pictures or LIGGGHTS's screen output
+    if parts[0] == "VTK" or path.endswith(".restart") or parts[-1].endswith(".png") or \
+            parts[-1] == "log.liggghtsScreen":
         return False
     for i, p in enumerate(parts[:-1]):
         try:

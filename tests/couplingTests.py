@@ -673,6 +673,17 @@ def test_spouted_bed():
     rise, still = float(np.mean(v[over_jet, 2])), float(np.mean(np.linalg.norm(v[at_walls], axis=1)))
     check("the jet: parcels over the channel rise at more than 0.25 m/s and 3 times the speed of those "
           "by the side walls", rise > 0.25 and rise > 3*still, "(%.3f and %.4f m/s)" % (rise, still))
+    # the averages kept per snapshot (snapshotProfiles.npz) = the averages of the snapshots
+    plot = "/usr/bin/python3 %s 0.05" % os.path.join(TUTORIALS, "spoutedBed", "plotSpoutedBed.py")
+    result = os.path.join(run, "spoutedBed.result")
+    rc, out = sh(plot, run, check=False)
+    from_files = open(result).read() if rc == 0 else ""
+    os.rename(os.path.join(run, "VTK"), os.path.join(run, "VTK.away"))
+    rc, out = sh(plot, run, check=False)
+    os.rename(os.path.join(run, "VTK.away"), os.path.join(run, "VTK"))
+    check("spouted bed averages from the kept snapshot sums, the snapshots gone, = from the snapshots",
+          rc == 0 and from_files and open(result).read() == from_files
+          and results(result).get("snapshots") == 3, out[-300:] if rc else "")
     check_carried_run(run)
     # 2 ranks = serial from the same packing, solvers converged to round-off
     edit(os.path.join(run, "system", "fvSolution"), r"tolerance 1e-8; relTol [0-9.]+;", "tolerance 1e-14; relTol 0;")

@@ -43,14 +43,19 @@ HEAD = "units si\natom_style granular\natom_modify map array\nboundary f f f\nne
 LOG_LINES = re.compile(r"^(Time = |ExecutionTime|End$|coupling )")
 
 
-def numbered(root):
-    found = set()
+def time_names(root):
+    """The numbered directories under root: each one's time and name."""
+    names = {}
     for d in os.listdir(root):
         try:
-            found.add(float(d))
+            names[float(d)] = d
         except ValueError:
             pass
-    return found
+    return names
+
+
+def numbered(root):
+    return set(time_names(root))
 
 
 def latest_time(case):
@@ -66,13 +71,7 @@ def latest_time(case):
 
 def time_dir(root, t):
     """The directory of time t under root, as OpenFOAM named it."""
-    for d in os.listdir(root):
-        try:
-            if abs(float(d) - t) < 1e-12:
-                return d
-        except ValueError:
-            pass
-    return None
+    return next((d for v, d in time_names(root).items() if abs(v - t) < 1e-12), None)
 
 
 def liggghts(case, script):

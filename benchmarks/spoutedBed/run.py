@@ -136,6 +136,10 @@ def run_one(model, h, a):
         set_end(case, end + a.extend)
     subprocess.run(["/usr/bin/python3", os.path.join(HERE, "record.py"), case], env=ENV, check=True)
     open(done, "w").write("%s\n" % time.strftime("%Y-%m-%d %H:%M"))
+    if os.path.isfile(carried):
+        # recorded: nothing is left to continue
+        os.remove(carried)
+        print("%s h = %g: recorded; removed %s (git rm it)" % (model, h, carried))
 
 
 def main():

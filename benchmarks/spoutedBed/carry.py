@@ -40,7 +40,7 @@ STATE = "carriedParticles.npz"
 HEAD = "units si\natom_style granular\natom_modify map array\nboundary f f f\nnewton off\n" \
        "communicate single vel yes\n"
 # the log lines run.py and record.py read
-LOG_LINES = re.compile(r"^(Time = |ExecutionTime|End$|coupling )")
+LOG_LINES = re.compile(r"^(Time = |ExecutionTime|End$|coupling |particleFluidCoupling: formulation )")
 
 
 def time_names(root):
@@ -146,6 +146,16 @@ def kept(case, t_name, path):
     return True
 
 
+def log_until(path, t):
+    """The log's kept lines up to the end of the step to time t: a run
+    continued from t runs the later steps again, and counts their time."""
+    for line in open(path):
+        if line.startswith("Time = ") and float(line.split()[2]) > t + 1e-9:
+            return
+        if LOG_LINES.match(line):
+            yield line
+
+
 def save(case, archive):
     t = latest_time(case)
     if t == 0:
@@ -171,7 +181,7 @@ def save(case, archive):
                 if not kept(case, name, rel):
                     continue
                 if re.match(r"log\.pimpleDEMFoam", f):
-                    lines = "".join(l for l in open(full) if LOG_LINES.match(l)).encode()
+                    lines = "".join(log_until(full, t)).encode()
                     info = tarfile.TarInfo(rel)
                     info.size = len(lines)
                     tar.addfile(info, io.BytesIO(lines))

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (voidFraction; see LICENSE)
 """Reading a fluidisedBed run: the particles of a VTK file, the bed weight
 per area, the inlet pressure history and the solver log's extremes."""
+import glob
 import os
 import re
 
@@ -47,8 +48,14 @@ def bed_weight(case, area=None):
     """from the particle count the solver reports at start and the beads'
     (or parcels') radius in the case's DEM parameters, per area (default:
     the box's width x depth from the DEM parameters)"""
-    text = open(os.path.join(case, "log.pimpleDEMFoam")).read()
-    n = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", text).group(1))
+    # a continued run's first log may be kept without its header: any log that has it
+    for log in sorted(glob.glob(os.path.join(case, "log.pimpleDEMFoam*"))):
+        m = re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", open(log).read())
+        if m:
+            break
+    else:
+        raise ValueError("bed_weight: no particle count in %s/log.pimpleDEMFoam*" % case)
+    n = int(m.group(1))
     r = caseProperties.particle_diameter(case)/2
     if area is None:
         box = caseProperties.dem_parameters(case)

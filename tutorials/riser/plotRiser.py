@@ -99,7 +99,8 @@ if late and vz_dev:
     print(f"beads leaving the top {out_rate:.0f} per s against {feed_rate:.0f} per s fed "
           f"({100*(out_rate/feed_rate - 1):+.1f} %)")
     result.update(slip=slip, slip_expected=expected, slip_error=slip_error, bead_speed=v_p,
-                  gas_speed=u_gas, solid_fraction=solid, outflow_ratio=out_rate/feed_rate)
+                  gas_speed=u_gas, solid_fraction=solid, outflow_ratio=out_rate/feed_rate,
+                  outflow_rate=out_rate, feed_rate=feed_rate, terminal_velocity=v_t, rz_exponent=n_rz)
 else:
     print("short run: the riser is not yet developed (written times from 0.3 s are averaged)")
 with open("riser.result", "w") as f:

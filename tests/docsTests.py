@@ -161,10 +161,38 @@ def test_spouted_bed_summary_from_results():
                   abs(float(row[key]) - result[key]) <= 5e-4*abs(result[key]))
 
 
+def test_spouted_bed_against_fine():
+    print("the spouted bed's againstFine.csv against the recorded profiles (compare.py)")
+    here = os.path.join(ROOT, "benchmarks", "spoutedBed")
+    sys.path.insert(0, here)
+    import compare
+    path = os.path.join(here, "results", "againstFine.csv")
+    fine = compare.default_fine()
+    check("a fine run to compare with (recorded or carried)", os.path.exists(fine), "(%s)" % os.path.relpath(fine, ROOT))
+    if not (os.path.isfile(path) and os.path.exists(fine)):
+        return
+    runs = compare.recorded()
+    rows = [{k: str(v) for k, v in r.items()} for r in compare.against_fine(runs, fine)]
+    kept = list(csv.DictReader(open(path)))
+    check("againstFine.csv is compare.py's table of the committed results (%d rows)" % len(rows),
+          rows == kept and len(rows) == sum(h != "1" for _, h, _, _ in runs))
+    # a run set against itself differs by nothing; against another, by the profiles' mean gap
+    coarse = [f for _, h, f, _ in runs if h != "1"]
+    own = compare.profiles(coarse[0])
+    check("a run against itself: no difference", compare.gaps(own, own) == (0.0, 0.0))
+    if len(coarse) > 1:
+        other = compare.profiles(coarse[1])
+        spout = [abs(a - b) for h in compare.HEIGHTS for x, a, b in zip(own[h][0], own[h][1], other[h][1])
+                 if abs(x) < 12]
+        by_hand = sum(spout)/len(spout)
+        check("the spout's difference is the mean over the bins within 12 mm (%.4f)" % by_hand,
+              abs(compare.gaps(own, other)[0] - by_hand) < 1e-12)
+
+
 def main():
     checks.run([test_links, test_readme_results_in_docs, test_result_tables, test_coarse_bed_tables_from_runs,
                 test_study_tables_from_csv, test_compression_tables_from_csv,
-                test_spouted_bed_summary_from_results], sys.argv[1:])
+                test_spouted_bed_summary_from_results, test_spouted_bed_against_fine], sys.argv[1:])
     return checks.summary("docs")
 
 

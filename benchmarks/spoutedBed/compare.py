@@ -112,7 +112,7 @@ def gaps(run, fine):
 
 
 def recorded():
-    """[(model, h, folder, summary row)] of results/summary.csv, coarse first."""
+    """[(model, h, folder, summary row)] of results/summary.csv, in its order."""
     rows = list(csv.DictReader(open(os.path.join(RESULTS, "summary.csv"))))
     return [(r["model"], r["h"], os.path.join(RESULTS, "%s_h%s" % (r["model"], r["h"])), r) for r in rows]
 

@@ -663,6 +663,8 @@ def test_spouted_bed():
           and re.search(r"(?m)^variable\s+radius\s+equal\s+0.005\b",
                         open(os.path.join(run, "DEM", "in.parameters")).read()) is not None)
     check("1,326 cells (22 x 1 x 60 + 2 x 1 x 3)", "nCells: 1326" in open(os.path.join(run, "log.blockMesh")).read())
+    check("scaleCase warns that the bed's 40 mm depth is 4 parcels, fewer than 10",
+          "the bed is 4 parcels across in y" in open(os.path.join(case, "log.scaleCase.parcels_h4")).read())
     check_coupling_log("spouted bed", log, 0.2)
     # the jet: the parcels over the channel rise, those at the side walls stay
     sys.path.insert(0, os.path.join(TUTORIALS))

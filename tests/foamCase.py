@@ -137,8 +137,15 @@ def cell_centres(case):
     """Cell centres (list of (x, y, z)) from postProcess writeCellCentres."""
     os.makedirs(os.path.join(case, "0"), exist_ok=True)
     sh("postProcess -func writeCellCentres -time 0", case)
-    text = open(os.path.join(case, "0", "C")).read()
+    return read_vector_field(os.path.join(case, "0", "C"))
+
+
+def read_vector_field(path):
+    """internalField of an ascii volVectorField as a list of (x, y, z)."""
+    text = open(path).read()
     m = re.search(r"internalField\s+nonuniform\s+List<vector>\s*(\d+)\s*\((.*?)\)\s*;", text, re.S)
+    if not m:
+        raise ValueError("no nonuniform vector internalField in %s" % path)
     vals = [tuple(float(v) for v in t.split()) for t in re.findall(r"\(([^()]*)\)", m.group(2))]
     assert len(vals) == int(m.group(1))
     return vals

@@ -459,7 +459,9 @@ void Foam::caseScaler::scaleDemData(const fileName& file) const
 
 
 // the thinnest coarse bed measured to keep the fine bed's pressure drop
-// and Umf: the wide bed at h = 4, 10.5 parcels tall (docs/coarseGraining.md)
+// and Umf: the wide bed at h = 4, 10.5 parcels tall (docs/coarseGraining.md);
+// the spouted bed 8 parcels deep kept the beads' spout within their noise,
+// 5.3 and 4 deep did not: the walls loosen their packing (docs/spoutedBed.md)
 const Foam::label Foam::caseScaler::minParcelsAcross = 10;
 
 
@@ -650,7 +652,9 @@ void Foam::caseScaler::warnOfNarrowBeds
                 << "xyz"[r.dir] << " (" << r.length << " m over parcels of " << parcel
                 << " m), fewer than " << minParcelsAcross << ": thinner than any coarse"
                 << " bed measured to keep the fine bed's pressure drop and Umf"
-                << " (docs/coarseGraining.md)"
+                << " (docs/coarseGraining.md); between walls, parcels pack looser"
+                << " within a diameter of them (a spouted bed 4 parcels deep: a"
+                << " slower spout, docs/spoutedBed.md)"
                 << endl;
         }
     }

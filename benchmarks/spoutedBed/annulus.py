@@ -8,6 +8,8 @@ coarse annulus is the more permeable one. Writes results/annulus.csv, one row
 per run:
 
   run               the run's case, under build/spoutedBed/
+  spout_m_s         its front-wall particle speed over the channel (the
+                    24 mm over it, the six heights' profiles averaged)
   parcel_mm         its particles' diameter
   depth_in_parcels  the bed's 40 mm depth over it
   cells             the fluid's cells
@@ -35,9 +37,10 @@ sys.path[:0] = [os.path.join(ROOT, "tests"), os.path.join(ROOT, "tutorials")]
 import caseProperties  # noqa: E402
 import particleVtk  # noqa: E402
 from foamCase import read_scalar_field, read_vector_field, sh  # noqa: E402
+from compare import CHANNEL_HALF_WIDTH_MM, profiles  # noqa: E402
 
 START_UP = 1.0                  # s, as plotSpoutedBed.py
-SPOUT_HALF_WIDTH = 0.012        # m, the channel's half width (Yue et al. 2020)
+SPOUT_HALF_WIDTH = CHANNEL_HALF_WIDTH_MM/1000
 ANNULUS_X, ANNULUS_Z = 0.04, (0.03, 0.15)   # m, clear of the spout's edge and the bed's surface
 LAYERS = (0.05, 0.10, 0.15)     # m
 
@@ -93,13 +96,20 @@ def gas_shares(case):
     return (np.mean(shares, axis=0) if shares else [float("nan")]*len(LAYERS)), len(times)
 
 
+def spout_speed(case):
+    """Mean front-wall speed over the channel's bins at the six heights"""
+    return float(np.nanmean(np.concatenate([speed[np.abs(x) < CHANNEL_HALF_WIDTH_MM]
+                                            for x, speed in profiles(case).values()])))
+
+
 def row(case):
     diameter = caseProperties.particle_diameter(case)
     depth = caseProperties.dem_parameters(case)["depth"]
     solids, snapshots = annulus_solids(case)
     shares, fields = gas_shares(case)
     cells = len(read_scalar_field(os.path.join(case, "0", "V")))
-    out = dict(run=os.path.relpath(case, RUNS), parcel_mm="%.2f" % (1000*diameter),
+    out = dict(run=os.path.relpath(case, RUNS), spout_m_s="%.3f" % spout_speed(case),
+               parcel_mm="%.2f" % (1000*diameter),
                depth_in_parcels="%.1f" % (depth/diameter), cells=cells, annulus_solids="%.3f" % solids)
     out.update(("gas_share_z%03d" % round(1000*z), "%.3f" % s) for z, s in zip(LAYERS, shares))
     out["times"] = "%d snapshots, %d fields" % (snapshots, fields)
@@ -113,7 +123,7 @@ def main():
     rows = []
     for case in cases:
         rows.append(row(case))
-        print("    %(run)s: annulus solids %(annulus_solids)s, gas outside the spout %(gas_share_z050)s, "
+        print("    %(run)s: spout %(spout_m_s)s m/s, annulus solids %(annulus_solids)s, gas outside the spout %(gas_share_z050)s, "
               "%(gas_share_z100)s, %(gas_share_z150)s at z = 50, 100, 150 mm (%(times)s)" % rows[-1])
     with open(os.path.join(HERE, "results", "annulus.csv"), "w", newline="") as out:
         w = csv.DictWriter(out, fieldnames=list(rows[0]), lineterminator="\n")

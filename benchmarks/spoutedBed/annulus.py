@@ -118,8 +118,12 @@ def row(case):
 
 def main():
     cases = [os.path.abspath(c) for c in sys.argv[1:]]
-    if not cases or any(not os.path.isfile(os.path.join(c, "system", "controlDict")) for c in cases):
-        raise SystemExit(__doc__.split("usage: ")[1])
+    if not cases:
+        raise SystemExit("usage: " + __doc__.split("usage: ")[1])
+    for c in cases:
+        if not os.path.isfile(os.path.join(c, "particleSpeed_H015.csv")):
+            raise SystemExit("annulus.py: %s is not a spouted bed run with its profiles (no "
+                             "particleSpeed_H015.csv: run plotSpoutedBed.py there)" % c)
     rows = []
     for case in cases:
         rows.append(row(case))

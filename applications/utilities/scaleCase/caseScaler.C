@@ -460,8 +460,9 @@ void Foam::caseScaler::scaleDemData(const fileName& file) const
 
 // the thinnest coarse bed measured to keep the fine bed's pressure drop
 // and Umf: the wide bed at h = 4, 10.5 parcels tall (docs/coarseGraining.md);
-// the spouted bed 8 parcels deep kept the beads' spout within their noise,
-// 5.3 and 4 deep did not: the walls loosen their packing (docs/spoutedBed.md)
+// between walls, the fewer parcels fill a bed's depth the looser they pack:
+// the spouted bed's spout slowed at 8, 5.3 and 4 parcels deep, the more the
+// fewer (docs/spoutedBed.md)
 const Foam::label Foam::caseScaler::minParcelsAcross = 10;
 
 

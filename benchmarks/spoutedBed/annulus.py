@@ -73,7 +73,7 @@ def written_times(case, where=""):
 
 def gas_shares(case):
     """([annulus share of the upward gas flux at each of LAYERS], fields
-    averaged)"""
+    averaged, cells)"""
     # the time folders hold the DEM's files, so reconstructPar -newTimes would skip them
     missing = sorted(set(written_times(case, "processor0")) - set(written_times(case)), key=float)
     if missing:
@@ -93,7 +93,7 @@ def gas_shares(case):
         uz = np.array(read_vector_field(os.path.join(case, t, "U")))[:, 2]
         flux = alpha*uz*volumes        # a layer's cells share its thickness
         shares.append([np.sum(flux[layer & outside])/np.sum(flux[layer]) for layer in layers])
-    return (np.mean(shares, axis=0) if shares else [float("nan")]*len(LAYERS)), len(times)
+    return (np.mean(shares, axis=0) if shares else [float("nan")]*len(LAYERS)), len(times), len(volumes)
 
 
 def spout_speed(case):
@@ -106,8 +106,7 @@ def row(case):
     diameter = caseProperties.particle_diameter(case)
     depth = caseProperties.dem_parameters(case)["depth"]
     solids, snapshots = annulus_solids(case)
-    shares, fields = gas_shares(case)
-    cells = len(read_scalar_field(os.path.join(case, "0", "V")))
+    shares, fields, cells = gas_shares(case)
     out = dict(run=os.path.relpath(case, RUNS), spout_m_s="%.3f" % spout_speed(case),
                parcel_mm="%.2f" % (1000*diameter),
                depth_in_parcels="%.1f" % (depth/diameter), cells=cells, annulus_solids="%.3f" % solids)

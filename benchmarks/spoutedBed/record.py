@@ -45,10 +45,11 @@ def main():
     model = re.search(r"(?m)^voidFractionModel\s+(\w+);", coupling).group(1)
     factor = re.search(r"coarseGraining\s*\{\s*factor\s+(\S+);", coupling)
     h = float(factor.group(1)) if factor else 1.0
-    log = open(os.path.join(run, "log.pimpleDEMFoam")).read()
+    # a carried run's first log keeps only its time and timing lines: the count is in a later stretch's
+    logs = "".join(open(f).read() for f in sorted(glob.glob(os.path.join(run, "log.pimpleDEMFoam*"))))
     wall, simulated = wall_seconds(run)
     cells = int(re.search(r"nCells: (\d+)", open(os.path.join(run, "log.blockMesh")).read()).group(1))
-    particles = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", log).group(1))
+    particles = int(re.search(r"particleFluidCoupling: formulation \w+, (\d+) particles", logs).group(1))
     row = dict(model=model, h="%g" % h, cells=cells, particles=particles,
                wall_s_per_sim_s="%.1f" % (wall/simulated))
     for key in COLUMNS[4:-1]:

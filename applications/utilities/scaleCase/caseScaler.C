@@ -462,7 +462,7 @@ void Foam::caseScaler::scaleDemData(const fileName& file) const
 // and Umf: the wide bed at h = 4, 10.5 parcels tall (docs/coarseGraining.md);
 // between walls, the fewer parcels fill a bed's depth the looser they pack:
 // the spouted bed's spout slowed at 8, 5.3 and 4 parcels deep, the more the
-// fewer (docs/spoutedBed.md)
+// fewer, and kept the beads' within their noise at 10 (docs/spoutedBed.md)
 const Foam::label Foam::caseScaler::minParcelsAcross = 10;
 
 

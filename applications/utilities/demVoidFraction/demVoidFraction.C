@@ -40,6 +40,7 @@ Usage
 #include "voidFractionModel.H"
 #include "particleDistributor.H"
 #include "liggghtsCoupling.H"
+#include "particleFluidCoupling.H"
 #include "scalarRanges.H"
 #include "numericOption.H"
 #include "dumpSnapshots.H"
@@ -97,6 +98,8 @@ namespace
                 IOobject::NO_WRITE
             )
         );
+        keywordSchema::checkRepeats(couplingProperties.filePath());
+        particleFluidCoupling::keywords().check(couplingProperties);
         dictionary dict(couplingProperties);
         if (args.found("model"))
         {

@@ -412,6 +412,10 @@ void Foam::fluidCoarsener::coarsenCoefficients
                 }
                 continue;
             case modelCoefficients::number:
+            case modelCoefficients::flag:
+            case modelCoefficients::choice:
+            case modelCoefficients::text:
+            case modelCoefficients::settings:
                 continue;
         }
         value = given ? coeffs->get<scalar>(c.keyword) : c.fallback(twoD);

@@ -47,6 +47,12 @@ Foam::liftAndVirtualMass::liftAndVirtualMass
 }
 
 
+void Foam::liftAndVirtualMass::addKeywords(keywordSchema& schema)
+{
+    schema.add("virtualMassCoefficient", keywordSchema::oneNumber);
+}
+
+
 bool Foam::liftAndVirtualMass::handles(const word& force)
 {
     return force == "SaffmanMeiLift" || force == "virtualMass";

@@ -86,6 +86,9 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
     // a restart runs demRestartScript where there is one, else demScript
     // (whose 'variable demRestart index <initial state>' the command line
     // overrides)
+    keywordSchema::checkKind(dict, "demScript", keywordSchema::fileOrWord);
+    keywordSchema::checkKind(dict, "demRestartScript", keywordSchema::fileOrWord);
+    keywordSchema::checkKind(dict, "demScreen", keywordSchema::fileOrWord);
     const word scriptKey
     (
         restarting && dict.found("demRestartScript") ? "demRestartScript" : "demScript"
@@ -586,4 +589,12 @@ void Foam::liggghtsCoupling::setForces
         f[i][1] = forces[k].y();
         f[i][2] = forces[k].z();
     }
+}
+
+
+void Foam::liggghtsCoupling::addKeywords(keywordSchema& schema)
+{
+    schema.add("demScript", keywordSchema::fileOrWord);
+    schema.add("demRestartScript", keywordSchema::fileOrWord);
+    schema.add("demScreen", keywordSchema::fileOrWord);
 }

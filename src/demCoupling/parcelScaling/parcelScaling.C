@@ -26,6 +26,10 @@ Foam::parcelScaling::parcelScaling
     law_(law::cubic),
     dims_(twoDimensional ? 2 : 3)
 {
+    // `coarseGraining 2;` must not read as no coarse graining
+    keywordSchema schema("couplingProperties");
+    addKeywords(schema);
+    schema.checkKeyword(couplingDict, "coarseGraining");
     const dictionary* dictPtr = couplingDict.findDict("coarseGraining");
     if (!dictPtr) return;
     dict_ = *dictPtr;
@@ -88,4 +92,13 @@ void Foam::parcelScaling::checkTypes(const label nTypes) const
             << " values for the DEM's " << nTypes << " particle types: give one"
             << " per type, or one number for all" << exit(FatalIOError);
     }
+}
+
+
+void Foam::parcelScaling::addKeywords(keywordSchema& schema)
+{
+    keywordSchema coarse("coarseGraining");
+    coarse.add("factor", keywordSchema::numberOrList);
+    coarse.add("forceScaling", keywordSchema::oneWord);
+    schema.add("coarseGraining", coarse);
 }

@@ -27,6 +27,14 @@ namespace
         );
     }
 
+    //- The dictionary, once every entry is known and of its kind
+    const Foam::dictionary& checked(const Foam::IOdictionary& dict)
+    {
+        Foam::keywordSchema::checkRepeats(dict.filePath());
+        Foam::particleFluidCoupling::keywords().check(dict);
+        return dict;
+    }
+
     Foam::scalar readDensity(const Foam::fvMesh& mesh)
     {
         const Foam::IOdictionary transport
@@ -85,7 +93,8 @@ Foam::particleFluidCoupling::particleFluidCoupling
 :
     mesh_(mesh),
     dict_(couplingDictIO(mesh)),
-    rho_(readDensity(mesh)),
+    // the first member after dict_: the whole file is checked before any read
+    rho_((checked(dict_), readDensity(mesh))),
     g_(g.value()),
     formulation_(formulation::A),
     pressureGradientForce_(false),
@@ -165,6 +174,24 @@ Foam::particleFluidCoupling::particleFluidCoupling
     checkParcels();
     Info<< "particleFluidCoupling: formulation " << formulationNames[formulation_] << ", "
         << voidFraction_->stats().nParticles << " particles" << endl;
+}
+
+
+Foam::keywordSchema Foam::particleFluidCoupling::keywords()
+{
+    keywordSchema schema("couplingProperties");
+    schema.add("couplingInterval", keywordSchema::wholeNumber);
+    schema.add("formulation", keywordSchema::oneWord);
+    schema.add("forces", keywordSchema::listOfWords);
+    schema.add("particlesOutside", keywordSchema::oneWord);
+    schema.add("reportExchange", keywordSchema::onOff);
+    schema.add("particleOutput", keywordSchema::oneWord);
+    voidFractionModel::addKeywords(schema);
+    dragModel::addKeywords(schema);
+    liggghtsCoupling::addKeywords(schema);
+    parcelScaling::addKeywords(schema);
+    liftAndVirtualMass::addKeywords(schema);
+    return schema;
 }
 
 

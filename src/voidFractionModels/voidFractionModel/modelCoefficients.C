@@ -60,3 +60,29 @@ const Foam::modelCoefficients::coefficient* Foam::modelCoefficients::find
     }
     return nullptr;
 }
+
+
+Foam::keywordSchema Foam::modelCoefficients::schema(const word& modelType)
+{
+    keywordSchema s(modelType + "Coeffs");
+    for (const coefficient& c : of(modelType))
+    {
+        switch (c.what)
+        {
+            case splitModel:
+                s.add(c.keyword, keywordSchema::oneWord);
+                // the split model's coefficients, inside this dictionary
+                for (const word& m : models())
+                {
+                    if (m != modelType) s.add(m + "Coeffs", schema(m));
+                }
+                break;
+            case flag: s.add(c.keyword, keywordSchema::onOff); break;
+            case choice: s.add(c.keyword, keywordSchema::oneWord); break;
+            case text: s.add(c.keyword, keywordSchema::fileOrWord); break;
+            case settings: s.add(c.keyword, keywordSchema::subDictionary); break;
+            default: s.add(c.keyword, keywordSchema::oneNumber);
+        }
+    }
+    return s;
+}

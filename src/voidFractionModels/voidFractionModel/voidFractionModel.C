@@ -8,11 +8,28 @@
 #include "mathematicalConstants.H"
 #include "zeroGradientFvPatchFields.H"
 #include "UIndirectList.H"
+#include "modelCoefficients.H"
 
 namespace Foam
 {
     defineTypeNameAndDebug(voidFractionModel, 0);
     defineRunTimeSelectionTable(voidFractionModel, dictionary);
+}
+
+
+Foam::dictionary Foam::voidFractionModel::checkedCoeffs
+(
+    const word& modelType,
+    const dictionary& dict
+)
+{
+    // the kinds of what this constructor reads, for any caller's dictionary
+    keywordSchema::checkKind(dict, "alphaMin", keywordSchema::oneNumber);
+    keywordSchema::checkKind(dict, "twoDimensional", keywordSchema::onOff);
+    keywordSchema::checkKind(dict, modelType + "Coeffs", keywordSchema::subDictionary);
+    const dictionary coeffs(dict.subOrEmptyDict(modelType + "Coeffs"));
+    modelCoefficients::schema(modelType).check(coeffs);
+    return coeffs;
 }
 
 
@@ -24,7 +41,7 @@ Foam::voidFractionModel::voidFractionModel
 )
 :
     mesh_(mesh),
-    coeffs_(dict.subOrEmptyDict(modelType + "Coeffs")),
+    coeffs_(checkedCoeffs(modelType, dict)),
     alphaMin_(dict.lookupOrDefault<scalar>("alphaMin", 0.1)),
     locator_(mesh),
     limiter_(mesh, alphaMin_),

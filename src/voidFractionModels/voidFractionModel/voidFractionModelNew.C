@@ -5,6 +5,7 @@
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
 #include "voidFractionModel.H"
+#include "modelCoefficients.H"
 
 Foam::autoPtr<Foam::voidFractionModel> Foam::voidFractionModel::New
 (
@@ -12,6 +13,7 @@ Foam::autoPtr<Foam::voidFractionModel> Foam::voidFractionModel::New
     const fvMesh& mesh
 )
 {
+    keywordSchema::checkKind(dict, "voidFractionModel", keywordSchema::oneWord);
     const word modelType(dict.get<word>("voidFractionModel"));
 
     Info<< "Selecting voidFractionModel " << modelType << endl;
@@ -30,4 +32,17 @@ Foam::autoPtr<Foam::voidFractionModel> Foam::voidFractionModel::New
     }
 
     return autoPtr<voidFractionModel>(cstrIter()(modelType, dict, mesh));
+}
+
+
+void Foam::voidFractionModel::addKeywords(keywordSchema& schema)
+{
+    schema.add("voidFractionModel", keywordSchema::oneWord);
+    schema.add("alphaMin", keywordSchema::oneNumber);
+    schema.add("twoDimensional", keywordSchema::onOff);
+    // any model's, so that one file can hold them all for -model to choose
+    for (const word& m : modelCoefficients::models())
+    {
+        schema.add(m + "Coeffs", modelCoefficients::schema(m));
+    }
 }

@@ -15,6 +15,7 @@ namespace Foam
 
 Foam::autoPtr<Foam::dragModel> Foam::dragModel::New(const dictionary& dict)
 {
+    keywordSchema::checkKind(dict, "dragModel", keywordSchema::oneWord);
     const word modelType(dict.get<word>("dragModel"));
 
     Info<< "Selecting dragModel " << modelType << endl;
@@ -33,4 +34,10 @@ Foam::autoPtr<Foam::dragModel> Foam::dragModel::New(const dictionary& dict)
     }
 
     return autoPtr<dragModel>(cstrIter()(dict));
+}
+
+
+void Foam::dragModel::addKeywords(keywordSchema& schema)
+{
+    schema.add("dragModel", keywordSchema::oneWord);
 }

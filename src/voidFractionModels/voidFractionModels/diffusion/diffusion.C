@@ -34,7 +34,10 @@ namespace voidFractionModels
                 smoothingDefaults::diffusionCoefficient, "bandwidth"
             },
             {"nSteps", modelCoefficients::number, nullptr, ""},
-            {"initial", modelCoefficients::splitModel, nullptr, ""}
+            {"initial", modelCoefficients::splitModel, nullptr, ""},
+            {"integration", modelCoefficients::choice, nullptr, ""},
+            {"laplacianScheme", modelCoefficients::text, nullptr, ""},
+            {"solver", modelCoefficients::settings, nullptr, ""}
         }
     );
 }

@@ -26,7 +26,8 @@ namespace voidFractionModels
                 "bandwidthOverCellSize", modelCoefficients::perCellSize,
                 [](bool) { return smoothingDefaults::kernelBandwidthOverCellSize(); }, "bandwidth"
             },
-            {"cutoff", modelCoefficients::number, nullptr, ""}
+            {"cutoff", modelCoefficients::number, nullptr, ""},
+            {"reflectAtWalls", modelCoefficients::flag, nullptr, ""}
         }
     );
 }

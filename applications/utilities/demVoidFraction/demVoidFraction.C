@@ -40,7 +40,7 @@ Usage
 #include "voidFractionModel.H"
 #include "particleDistributor.H"
 #include "liggghtsCoupling.H"
-#include "particleFluidCoupling.H"
+#include "couplingKeywords.H"
 #include "scalarRanges.H"
 #include "numericOption.H"
 #include "dumpSnapshots.H"
@@ -98,8 +98,7 @@ namespace
                 IOobject::NO_WRITE
             )
         );
-        keywordSchema::checkRepeats(couplingProperties.filePath());
-        particleFluidCoupling::keywords().check(couplingProperties);
+        checkCouplingProperties(couplingProperties, couplingProperties.filePath());
         dictionary dict(couplingProperties);
         if (args.found("model"))
         {

@@ -58,6 +58,8 @@ Usage
 #include "OSspecific.H"
 #include "caseScaler.H"
 #include "numericOption.H"
+#include "caseFiles.H"
+#include "couplingKeywords.H"
 
 using namespace Foam;
 
@@ -140,6 +142,9 @@ int main(int argc, char *argv[])
         FatalErrorInFunction << "-factor " << h << ": must be positive" << exit(FatalError);
     }
     const fileName source(args.path());
+    // a damaged file stops here, before anything is written
+    const fileName couplingFile(source/"constant"/"couplingProperties");
+    checkCouplingProperties(caseFiles::readDict(couplingFile), couplingFile);
     const fileName output(args.get<fileName>("output").expand());
     const fileName outputAbs(output.isAbsolute() ? output : cwd()/output);
     const fileName sourceAbs(source.isAbsolute() ? source : cwd()/source);

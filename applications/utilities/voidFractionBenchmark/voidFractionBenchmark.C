@@ -49,11 +49,28 @@ Usage
 #include "OFstream.H"
 #include "IFstream.H"
 #include "IStringStream.H"
+#include "couplingKeywords.H"
 
 using namespace Foam;
 
 namespace
 {
+    //- Checks voidFractionBenchmarkDict; returns what a run may hold
+    keywordSchema benchmarkKeywords(const IOdictionary& benchDict)
+    {
+        keywordSchema run("a run of voidFractionBenchmarkDict");
+        voidFractionModel::addKeywords(run);
+        run.add("parameter", keywordSchema::oneNumber);
+        keywordSchema bench("voidFractionBenchmarkDict");
+        bench.add("reference", run);
+        bench.add("repeat", keywordSchema::wholeNumber);
+        bench.add("csv", keywordSchema::fileOrWord);
+        bench.add("runs", keywordSchema::subDictionary);
+        keywordSchema::checkRepeats(benchDict.filePath());
+        bench.check(benchDict);
+        return run;
+    }
+
     //- Peak resident memory of this process so far (MB; 0 if unknown)
     scalar peakMemoryMB()
     {
@@ -213,6 +230,8 @@ int main(int argc, char *argv[])
     (
         IOobject("voidFractionBenchmarkDict", runTime.system(), mesh, IOobject::MUST_READ)
     );
+    checkCouplingProperties(coupling, coupling.filePath());
+    const keywordSchema runKeywords(benchmarkKeywords(benchDict));
     const label repeat = benchDict.getOrDefault<label>("repeat", 10);
     fileName csvName(benchDict.getOrDefault<fileName>("csv", "voidFractionBenchmark.csv").expand());
     if (!csvName.isAbsolute()) csvName = runTime.globalPath()/csvName;
@@ -250,6 +269,7 @@ int main(int argc, char *argv[])
                 << "runs: entry " << e.keyword() << " is not a dictionary"
                 << exit(FatalIOError);
         }
+        runKeywords.check(e.dict());
         dictionary runDict(coupling);
         runDict.merge(e.dict());
         csv.row(e.keyword(), runDict, measure(runDict, mesh, particles, reference, repeat));

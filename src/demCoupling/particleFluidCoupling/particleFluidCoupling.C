@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 #include "particleFluidCoupling.H"
 #include "readChoice.H"
+#include "couplingKeywords.H"
 #include "fvc.H"
 #include "particleVtkWriter.H"
 #include "StringStream.H"
@@ -30,8 +31,7 @@ namespace
     //- The dictionary, once every entry is known and of its kind
     const Foam::dictionary& checked(const Foam::IOdictionary& dict)
     {
-        Foam::keywordSchema::checkRepeats(dict.filePath());
-        Foam::particleFluidCoupling::keywords().check(dict);
+        Foam::checkCouplingProperties(dict, dict.filePath());
         return dict;
     }
 
@@ -177,21 +177,14 @@ Foam::particleFluidCoupling::particleFluidCoupling
 }
 
 
-Foam::keywordSchema Foam::particleFluidCoupling::keywords()
+void Foam::particleFluidCoupling::addKeywords(keywordSchema& schema)
 {
-    keywordSchema schema("couplingProperties");
     schema.add("couplingInterval", keywordSchema::wholeNumber);
     schema.add("formulation", keywordSchema::oneWord);
     schema.add("forces", keywordSchema::listOfWords);
     schema.add("particlesOutside", keywordSchema::oneWord);
     schema.add("reportExchange", keywordSchema::onOff);
     schema.add("particleOutput", keywordSchema::oneWord);
-    voidFractionModel::addKeywords(schema);
-    dragModel::addKeywords(schema);
-    liggghtsCoupling::addKeywords(schema);
-    parcelScaling::addKeywords(schema);
-    liftAndVirtualMass::addKeywords(schema);
-    return schema;
 }
 
 

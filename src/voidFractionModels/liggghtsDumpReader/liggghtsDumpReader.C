@@ -6,6 +6,8 @@
 \*---------------------------------------------------------------------------*/
 #include "liggghtsDumpReader.H"
 #include "error.H"
+#include "textNumber.H"
+#include <algorithm>
 
 #include <cerrno>
 #include <cmath>
@@ -59,17 +61,11 @@ double Foam::liggghtsDumpReader::number
     const std::string& column
 ) const
 {
-    const char* s = word.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(s, &end);
-    if (end == s || *end != '\0' || errno == ERANGE)
+    const char* why = nullptr;
+    const double v = textNumber(word, why);
+    if (why)
     {
-        error(line, "malformed number '" + word + "' in column " + column);
-    }
-    if (!std::isfinite(v))
-    {
-        error(line, "non-finite value '" + word + "' in column " + column);
+        error(line, "'" + word + "' in column " + column + ": " + why);
     }
     return v;
 }
@@ -193,6 +189,14 @@ bool Foam::liggghtsDumpReader::read(particleData& particles)
         for (std::size_t k = 0; k < neededColumns.size(); ++k)
         {
             v[k] = number(words[col[k]], lineNo_, neededColumns[k]);
+        }
+        // a column not kept that is no number still means a damaged file
+        for (std::size_t j = 0; j < words.size(); ++j)
+        {
+            if (std::find(col.begin(), col.end(), int(j)) == col.end())
+            {
+                number(words[j], lineNo_, columns[j]);
+            }
         }
         if (v[4] <= 0) error(lineNo_, "radius must be positive, got " + words[col[4]]);
         if (v[0] != std::floor(v[0])) error(lineNo_, "id must be a whole number, got " + words[col[0]]);

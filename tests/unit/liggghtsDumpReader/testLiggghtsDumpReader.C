@@ -138,7 +138,18 @@ int main()
     refused
     (
         "a malformed number: error names the column",
-        header(0, 1, atoms) + "1 0 0.x 0 1e-3\n", {"line 10", "malformed number '0.x' in column y"}
+        header(0, 1, atoms) + "1 0 0.x 0 1e-3\n", {"line 10", "'0.x' in column y: not a number"}
+    );
+    refused
+    (
+        "an overflowing number: error names it (no floating-point trap)",
+        header(0, 1, atoms) + "1 0 1e999 0 1e-3\n", {"line 10", "'1e999' in column y: out of the range"}
+    );
+    refused
+    (
+        "a non-number in a column not kept: the file is damaged",
+        header(0, 1, "id type x y z vx radius") + "1 1 0 0 0 nan 1e-3\n",
+        {"line 10", "'nan' in column vx: not a finite number"}
     );
     refused("an empty file: error says so", "", {"the file is empty"});
 

@@ -306,9 +306,8 @@ def classify(rc, out, needle):
         return "" if rc == 0 and "\nEnd" in out else "valid input did not run (status %d)" % rc
     if rc == 0:
         return "wrong input ran (status 0): expected an error naming '%s'" % needle
-    error = out[out.find("FOAM FATAL"):] if "FOAM FATAL" in out else ""
-    if not error:
-        return "stopped (status %d) without a FOAM FATAL error" % rc
+    # OpenFOAM's own command-line errors ('Invalid option') are not FOAM FATAL
+    error = out[out.find("FOAM FATAL"):] if "FOAM FATAL" in out else out[-2000:]
     needles = needle if isinstance(needle, tuple) else (needle,)
     if not any(n in error for n in needles):
         return "error does not name '%s'" % "' or '".join(needles)
@@ -361,6 +360,7 @@ def test_coupling_fuzz():
             bad.append("run %d (%s, seed %d): %s: %s\n%s" % (i, which, seed, what, why, out[-500:]))
         else:
             shutil.rmtree(case, ignore_errors=True)
+    documented(seed, runs, RUNS, "%d errors naming the entry, %d runs to the end" % (counts["error"], counts["ran"]))
     check("%d damaged couplingProperties: %d clean errors naming the entry, %d valid runs, "
           "no crash, hang or wrong input run" % (runs, counts["error"], counts["ran"]),
           not bad, "%d not as expected; the first:\n" % len(bad) + "\n".join(bad[:5]) if bad else "")
@@ -465,7 +465,229 @@ def test_dump_fuzz():
         return rc, out, case
     with ThreadPoolExecutor(max_workers=2) as pool:
         results = list(pool.map(run, enumerate(cases)))
-    report("damaged dumps", seed, cases, results)
+    counts = report("damaged dumps", seed, cases, results)
+    documented(seed, runs, RUNS // 4, "%d errors naming the dump, %d runs" % (counts["error"], counts["ran"]))
+
+
+NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
+ARG_POOL = ["foo", "2", "1", "0", "-1", "0.5", "1.5", "1e30", "1e999", "nan", "inf", "", "a b",
+            "kernel", "centroid", "cubic", "exact", "0:1", ":", "0,2", "1:2", "p.dump",
+            "missing.dump", "(z 12 0.05)", "(q 3)", "vf2", "x,y"]
+
+
+def finite(text):
+    return bool(NUMBER.match(text)) and abs(float(text)) < 1.7e308
+
+
+def word_like(text):
+    return bool(text) and not any(c.isspace() or c in "\"'/;{}" for c in text)
+
+
+def selects_zero(text):
+    """-time's ranges: comma-separated numbers, a:b, a: or :b; do they match 0?"""
+    hit = False
+    for item in text.split(","):
+        lo, colon, hi = item.partition(":")
+        if not colon:
+            if not finite(item):
+                return None
+            hit |= float(item) == 0
+            continue
+        if (lo and not finite(lo)) or (hi and not finite(hi)) or not (lo or hi):
+            return None
+        hit |= (not lo or float(lo) <= 0) and (not hi or 0 <= float(hi))
+    return hit
+
+
+def dem_void_fraction_problem(opts):
+    """demVoidFraction in a case with p.dump (one snapshot, TIMESTEP 0)"""
+    if "dump" not in opts:
+        return "-dump"
+    for name, value in opts.items():
+        if name in ("dump", "previous") and value != "p.dump":
+            return value or "dump"
+        if name == "model" and value not in CHOICES["voidFractionModel"]:
+            return value or "model"
+        if name == "repeat" and not (finite(value) and float(value) >= 0 and float(value).is_integer()):
+            return "-repeat"
+        if name == "deltaT" and not (finite(value) and float(value) > 0):
+            return "-deltaT"
+        if name == "time" and not selects_zero(value):
+            return "-time" if selects_zero(value) is None else "none of the 1 snapshots"
+        if name == "name" and not word_like(value):
+            return "-name"
+    return None
+
+
+def scale_case_problem(opts):
+    """scaleCase in the settling sphere's case"""
+    parcels = "parcels" in opts
+    if "factor" not in opts or not finite(opts["factor"]):
+        return "-factor"
+    for name in ("minCells", "relativeSmoothing"):
+        if name in opts and (not parcels or "keepMesh" in opts):
+            return "-" + name
+    if "keepMesh" in opts and not parcels:
+        return "-keepMesh"
+    h = float(opts["factor"])
+    if not h > 0:
+        return "-factor"
+    if "output" not in opts:
+        return "-output"
+    if opts["output"] in ("", ".") or any(c.isspace() or c in "\"'" for c in opts["output"]):
+        return "-output"
+    if parcels:
+        if h < 1:
+            return "-factor"
+        if opts["parcels"] not in ("cubic", "exact"):
+            return "-parcels"
+        rules = opts.get("minCells")
+        if rules is not None and not re.fullmatch(r"(\s*\([xyz] \d+( [\d.]+)?\))+\s*", rules):
+            return "-minCells"
+    return None
+
+
+def benchmark_problem(opts):
+    """voidFractionBenchmark in a case with p.dump and a benchmark dictionary"""
+    if "dump" not in opts:
+        return "-dump"
+    if opts["dump"] != "p.dump":
+        return opts["dump"] or "dump"
+    if "sample" in opts and (not word_like(opts["sample"]) or "," in opts["sample"]):
+        return "-sample"
+    return None
+
+
+UTILITIES = {
+    # name: (the valid command's options, optional ones, flags, oracle)
+    "demVoidFraction": ({"dump": "p.dump"}, ["model", "repeat", "deltaT", "time", "name", "previous"],
+                        ["latest", "distribute"], dem_void_fraction_problem),
+    "scaleCase": ({"factor": "2", "output": "OUT"}, ["parcels", "minCells"],
+                  ["keepMesh", "relativeSmoothing", "overwrite"], scale_case_problem),
+    "voidFractionBenchmark": ({"dump": "p.dump"}, ["sample"], [], benchmark_problem),
+}
+
+
+def damage_arguments(rng):
+    """(utility, what was done, argument list, needle or None)"""
+    utility = rng.choice(sorted(UTILITIES))
+    base, optional, flags, problem = UTILITIES[utility]
+    opts = dict(base)
+    extra = []
+    how = rng.choice(["replace", "add", "add", "flag", "drop", "unknown", "no value", "twice"])
+    if how == "replace":
+        name = rng.choice(sorted(opts))
+        opts[name] = rng.choice(ARG_POOL)
+        what = "-%s '%s'" % (name, opts[name])
+    elif how == "add":
+        name = rng.choice(optional)
+        opts[name] = rng.choice(ARG_POOL)
+        what = "added -%s '%s'" % (name, opts[name])
+    elif how == "flag" and flags:
+        name = rng.choice(flags)
+        opts[name] = None
+        what = "added -%s" % name
+    elif how == "drop":
+        name = rng.choice(sorted(opts))
+        del opts[name]
+        what = "dropped -%s" % name
+    elif how == "unknown":
+        name = rng.choice(["bogus", misspell(rng.choice(sorted(base) + optional), rng)])
+        extra = ["-" + name, "1"]
+        what = "unknown option -%s" % name
+    elif how == "no value":
+        name = rng.choice(optional)
+        extra = ["-" + name]
+        what = "-%s without its value" % name
+    else:
+        how = "twice"
+        name = rng.choice(sorted(opts))
+        extra = ["-" + name, opts[name]]
+        what = "-%s given twice" % name
+    args = []
+    for key, value in opts.items():
+        args += ["-" + key] + ([] if value is None else [value])
+    args += extra
+    if how in ("unknown", "no value", "twice"):
+        needle = name
+    else:
+        needle = problem({k: ("" if v is None else v) for k, v in opts.items()})
+    return utility, what, args, needle
+
+
+BENCHMARK_DICT = """FoamFile { version 2.0; format ascii; class dictionary; object voidFractionBenchmarkDict; }
+reference { voidFractionModel analytical; }
+repeat 1;
+csv "bench.csv";
+runs { centroid { voidFractionModel centroid; } }
+"""
+
+
+def test_argument_fuzz():
+    seed, runs = option("--seed", SEED), option("--runs", RUNS) // 3
+    print("demVoidFraction, scaleCase and voidFractionBenchmark on %d damaged command lines (seed %d)"
+          % (runs, seed))
+    rng = random.Random(seed)
+    base = prepare("fuzz-args")
+    write_particles(base)
+    with open(os.path.join(base, "system", "voidFractionBenchmarkDict"), "w") as f:
+        f.write(BENCHMARK_DICT)
+    cases = [damage_arguments(rng) for _ in range(runs)]
+
+    def run(ic):
+        i, (utility, what, args, needle) = ic
+        case = "%s-run%d" % (base, i)
+        shutil.rmtree(case, ignore_errors=True)
+        shutil.rmtree(case + "-out", ignore_errors=True)
+        shutil.copytree(base, case)
+        words = [case + "-out" if a == "OUT" else a for a in args]
+        command = "timeout %d %s %s" % (TIMEOUT, utility, " ".join("'%s'" % w for w in words))
+        rc, out = sh(command, case, check=False)
+        if rc == 0 or needle:
+            shutil.rmtree(case + "-out", ignore_errors=True)
+        return rc, out, case
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        results = list(pool.map(run, enumerate(cases)))
+    counts = report("damaged command lines", seed,
+                    [(u + " " + what, " ".join(a), n) for u, what, a, n in cases], results)
+    documented(seed, runs, RUNS // 3,
+               "%d errors naming the option or value, %d runs" % (counts["error"], counts["ran"]))
+
+
+def test_utilities_check_coupling_properties():
+    print("the utilities that read couplingProperties check it as the solver does")
+    base = prepare("fuzz-utilities")
+    write_particles(base)
+    with open(os.path.join(base, "system", "voidFractionBenchmarkDict"), "w") as f:
+        f.write(BENCHMARK_DICT)
+    damages = [("coarseGraining 2;", "coarseGraining in couplingProperties is not a dictionary"),
+               ("virtualMassCoeficient 0.3;", "unknown keyword virtualMassCoeficient"),
+               ("formulation B;", "duplicate entry: formulation")]
+    commands = {"demVoidFraction": "demVoidFraction -dump p.dump",
+                "scaleCase": "scaleCase -factor 2 -output ../fuzz-utilities-out",
+                "voidFractionBenchmark": "voidFractionBenchmark -dump p.dump"}
+    props = os.path.join(base, "constant", "couplingProperties")
+    original = open(props).read()
+    for line, needle in damages:
+        with open(props, "w") as f:
+            f.write(original + line + "\n")
+        for name, command in sorted(commands.items()):
+            shutil.rmtree(base + "-out", ignore_errors=True)
+            rc, out = sh("timeout %d %s" % (TIMEOUT, command), base, check=False)
+            why = classify(rc, out, needle)
+            check("%s with '%s': %s" % (name, line, why or "error says '%s'" % needle), not why,
+                  "" if not why else out[-400:])
+            check("%s with '%s': nothing written" % (name, line),
+                  not os.path.exists(base + "-out") and not os.path.exists(os.path.join(base, "bench.csv"))
+                  and not os.path.exists(os.path.join(base, "0", "voidfraction")))
+
+
+def documented(seed, runs, default_runs, text):
+    """With the default seed and count, docs/validation.md must state these counts"""
+    if seed != SEED or runs != default_runs:
+        return
+    docs = open(os.path.join(ROOT, "docs", "validation.md")).read()
+    check("docs/validation.md states the counts: '%s'" % text, text in docs)
 
 
 def report(what, seed, cases, results):
@@ -487,7 +709,8 @@ def report(what, seed, cases, results):
 
 
 def main():
-    tests = [test_coupling_fuzz, test_dump_fuzz]
+    tests = [test_coupling_fuzz, test_dump_fuzz, test_argument_fuzz,
+             test_utilities_check_coupling_properties]
     names = [a for a in sys.argv[1:] if a.startswith("test_")]
     checks.run(tests, names)
     return checks.summary("fuzz")

@@ -102,16 +102,57 @@ namespace
         dictionary dict(couplingProperties);
         if (args.found("model"))
         {
-            dict.set("voidFractionModel", args.get<word>("model"));
+            const string model(args["model"]);
+            const wordList models(voidFractionModel::dictionaryConstructorTablePtr_->sortedToc());
+            if (!models.found(model))
+            {
+                FatalErrorInFunction
+                    << "-model '" << model.c_str() << "' is not one of " << models
+                    << exit(FatalError);
+            }
+            dict.set("voidFractionModel", word(model));
         }
         return dict;
     }
+
+    //- Which snapshots to map and when: read before any work, so that a bad
+    //  value stops the run whether the dump holds one snapshot or many
+    struct seriesOptions
+    {
+        Foam::scalar deltaT;
+        Foam::scalarRanges times;
+        bool latest;
+
+        explicit seriesOptions(const Foam::argList& args)
+        :
+            deltaT(Foam::finiteOption(args, "deltaT", 1)),
+            times(Foam::rangesOption(args, "time")),
+            latest(args.found("latest"))
+        {
+            using namespace Foam;
+            if (!(deltaT > 0))
+            {
+                FatalErrorInFunction
+                    << "-deltaT " << deltaT << ": must be positive" << exit(FatalError);
+            }
+        }
+
+        void noneSelected(const Foam::argList& args, const Foam::label nSeen) const
+        {
+            using namespace Foam;
+            FatalErrorInFunction
+                << "none of the " << nSeen << " snapshots of " << args["dump"]
+                << " is at a time -time selects (times are TIMESTEP x deltaT " << deltaT << ")"
+                << exit(FatalError);
+        }
+    };
 
     //- Map the queue's snapshots (those -time selects, or the last with
     //  -latest), each into the time directory of its TIMESTEP x -deltaT
     void mapSeries
     (
         const Foam::argList& args,
+        const seriesOptions& series,
         Foam::Time& runTime,
         snapshotQueue& ahead,
         snapshotMapper& mapper,
@@ -119,14 +160,9 @@ namespace
     )
     {
         using namespace Foam;
-        const scalar deltaT = finiteOption(args, "deltaT", 1);
-        if (!(deltaT > 0))
-        {
-            FatalErrorInFunction
-                << "-deltaT " << deltaT << ": must be positive" << exit(FatalError);
-        }
-        const scalarRanges times(rangesOption(args, "time"));
-        const bool latest = args.found("latest");
+        const scalar deltaT = series.deltaT;
+        const scalarRanges& times = series.times;
+        const bool latest = series.latest;
         label nSeen = 0, nMapped = 0;
         while (ahead.size())
         {
@@ -141,13 +177,7 @@ namespace
             mapper.mapAndWrite(particles, holders);
             ++nMapped;
         }
-        if (nMapped == 0)
-        {
-            FatalErrorInFunction
-                << "none of the " << nSeen << " snapshots of " << args["dump"]
-                << " is at a time -time selects (times are TIMESTEP x deltaT " << deltaT << ")"
-                << exit(FatalError);
-        }
+        if (nMapped == 0) series.noneSelected(args, nSeen);
         Info<< nl << "Mapped " << nMapped << " of " << nSeen << " snapshots in "
             << seconds(clock.elapsedTime()) << " s" << endl;
     }
@@ -158,6 +188,7 @@ int main(int argc, char *argv[])
 {
     addOptions();
 
+    noRepeatedOptions(argc, argv);
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
@@ -168,6 +199,7 @@ int main(int argc, char *argv[])
             << "missing -dump FILE (a LIGGGHTS text dump) or -liggghts" << exit(FatalError);
     }
     const dictionary dict(couplingDictionary(args, mesh));
+    const seriesOptions series(args);
 
     clockTime clock;
     autoPtr<liggghtsCoupling> dem;
@@ -211,13 +243,16 @@ int main(int argc, char *argv[])
 
     if (ahead.size() == 1)
     {
+        // one snapshot goes into the start time; -time must still select it
+        const scalar t = ahead.front().timestep*series.deltaT;
+        if (series.times.size() && !series.times.match(t)) series.noneSelected(args, 1);
         particleData particles;
         const particleHolders holders(mapper.hold(std::move(ahead.front().particles), particles));
         mapper.mapAndWrite(particles, holders);
     }
     else
     {
-        mapSeries(args, runTime, ahead, mapper, clock);
+        mapSeries(args, series, runTime, ahead, mapper, clock);
     }
     Info<< "End" << endl;
     return 0;

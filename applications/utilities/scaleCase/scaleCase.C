@@ -60,6 +60,7 @@ Usage
 #include "numericOption.H"
 #include "caseFiles.H"
 #include "couplingKeywords.H"
+#include <algorithm>
 
 using namespace Foam;
 
@@ -67,8 +68,10 @@ namespace
 {
     bool isResult(const fileName& name)
     {
-        scalar t;
-        return (readScalar(name, t) && name != "0")
+        // a time directory; textNumber, as a folder "nan" would trip the trap
+        const char* notTime = nullptr;
+        textNumber(name, notTime);
+        return (!notTime && name != "0")
             || name.startsWith("processor") || name.startsWith("log.")
             || name == "postProcessing" || name == "VTK";
     }
@@ -119,6 +122,7 @@ int main(int argc, char *argv[])
         "with -parcels: kernel's and diffusion's smoothing grows with the cells"
         " (default: the fine case's length in metres)"
     );
+    noRepeatedOptions(argc, argv);
     #include "setRootCase.H"
 
     const scalar h = finiteOption(args, "factor");
@@ -145,6 +149,19 @@ int main(int argc, char *argv[])
     // a damaged file stops here, before anything is written
     const fileName couplingFile(source/"constant"/"couplingProperties");
     checkCouplingProperties(caseFiles::readDict(couplingFile), couplingFile);
+    if (!args.found("output"))
+    {
+        FatalErrorInFunction
+            << "option -output is required (the scaled case, a new directory)"
+            << exit(FatalError);
+    }
+    const std::string given(args["output"]);
+    if (given.empty() || !std::all_of(given.begin(), given.end(), [](char c) { return fileName::valid(c); }))
+    {
+        FatalErrorInFunction
+            << "-output '" << given.c_str() << "': not a directory name OpenFOAM takes"
+            << " (no spaces or quotes)" << exit(FatalError);
+    }
     const fileName output(args.get<fileName>("output").expand());
     const fileName outputAbs(output.isAbsolute() ? output : cwd()/output);
     const fileName sourceAbs(source.isAbsolute() ? source : cwd()/source);

@@ -50,6 +50,8 @@ Usage
 #include "IFstream.H"
 #include "IStringStream.H"
 #include "couplingKeywords.H"
+#include "numericOption.H"
+#include <algorithm>
 
 using namespace Foam;
 
@@ -210,6 +212,7 @@ int main(int argc, char *argv[])
     argList::addOption("dump", "file", "LIGGGHTS text dump (id x y z radius)");
     argList::addOption("sample", "name", "sample name for the CSV (default: the dump's)");
 
+    noRepeatedOptions(argc, argv);
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
@@ -219,8 +222,23 @@ int main(int argc, char *argv[])
         FatalErrorInFunction
             << "missing -dump FILE (a LIGGGHTS text dump)" << exit(FatalError);
     }
+    if (args["dump"].empty())
+    {
+        FatalErrorInFunction << "-dump '': no file name" << exit(FatalError);
+    }
     const fileName dumpFile(args.get<fileName>("dump").expand());
-    const word sample(args.getOrDefault<word>("sample", dumpFile.nameLessExt()));
+    // the sample names a CSV column: a word, without the comma of the CSV
+    const std::string sample(args.found("sample") ? args["sample"] : dumpFile.nameLessExt());
+    if
+    (
+        sample.empty() || sample.find(',') != std::string::npos
+     || !std::all_of(sample.begin(), sample.end(), [](char c) { return word::valid(c); })
+    )
+    {
+        FatalErrorInFunction
+            << "-sample '" << sample.c_str() << "': not a name for the CSV (a word without commas)"
+            << exit(FatalError);
+    }
 
     const IOdictionary coupling
     (
@@ -258,7 +276,7 @@ int main(int argc, char *argv[])
             << exit(FatalError);
     }
 
-    benchmarkCsv csv(csvName, sample, particles.size(), nCells, X);
+    benchmarkCsv csv(csvName, word(sample), particles.size(), nCells, X);
     csv.row("reference", referenceDict, ref);
 
     for (const entry& e : runs)

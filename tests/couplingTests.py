@@ -367,7 +367,7 @@ def test_bed_restart():
         worst = max(np.abs(binary_field(os.path.join(case, "processor%d" % r, "0.004", f)) -
                            full[(r, f)]).max()/np.abs(full[(r, f)]).max() for r in (0, 1))
         near("%s at t = 0.004, continued against uninterrupted (relative to its largest)" % f,
-             worst, 0, 1e-10)
+             worst, 0, 1e-12)
     listed = [(s["name"], s["time"]) for s in
               json.load(open(os.path.join(case, "VTK", "particles.vtp.series")))["files"]]
     check("the particles' time series continued: each write time once, in order",

@@ -127,9 +127,13 @@ def test_readme_numbers_in_linked_sections():
         check("README's %s ('%s...') is in the section it links to" % (number, block), False)
     check("every number of README traced to a linked section", not untraced(readme))
     # a number changed in README, or one whose block links elsewhere, is caught
-    for wrong in (readme.replace("−3.4 %", "−3.5 %"),
-                  readme.replace("docs/validation.md#coupled-solver", "docs/validation.md#geometry")):
-        check("a README number not in its linked section is caught", len(untraced(wrong)) > 0)
+    first = re.search(r"[−+]\d+\.(\d) %", readme)
+    changed = str((int(first.group(1)) + 1) % 10)
+    wrong_number = readme[:first.start(1)] + changed + readme[first.end(1):]
+    wrong_link = readme.replace("docs/validation.md#coupled-solver", "docs/validation.md#geometry")
+    for what, wrong in (("%s changed" % first.group(0), wrong_number), ("a link moved", wrong_link)):
+        check("a README number not in its linked section is caught (%s)" % what,
+              wrong != readme and len(untraced(wrong)) > 0)
 
 
 def test_result_tables():

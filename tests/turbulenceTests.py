@@ -68,6 +68,37 @@ def test_channel_against_pimpleFoam():
              np.log10(nut[0].max()/1.5e-5), 2, 1)
 
 
+def test_fvOptions_source():
+    print("fvOptions: a uniform momentum source in the channel is taken up by the pressure alone")
+    # incompressible flow with fixed inflow: a body force S = grad(S x) lowers
+    # the pressure by S (L - x) (the outlet's is fixed) and leaves the
+    # velocity as it was
+    source, length = 0.5, 0.5
+    # the source-free run: test_channel_against_pimpleFoam's, when it has run
+    plain = os.path.join(WORK, "channel-kEpsilon")
+    if not os.path.isfile(os.path.join(plain, "0.1", "U")):
+        plain = channel("channel-kEpsilon", "kEpsilon")
+    forced = channel("channel-fvOptions", "kEpsilon")
+    with open(os.path.join(forced, "system", "fvOptions"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n"
+                "push { type vectorSemiImplicitSource; selectionMode all; volumeMode specific;\n"
+                "       injectionRateSuSp { U ((%g 0 0) 0); } }\n" % source)
+    for case in [c for c in (plain, forced) if not os.path.isfile(os.path.join(c, "0.1", "U"))]:
+        rc, out = sh("pimpleDEMFoam > log.pimpleDEMFoam 2>&1", case, check=False)
+        check("%s: pimpleDEMFoam ran" % os.path.basename(case), rc == 0, out[-600:] if rc else "")
+        if rc:
+            return
+    log = open(os.path.join(forced, "log.pimpleDEMFoam")).read()
+    check("the source was selected", "Selecting finite volume options type vectorSemiImplicitSource" in log)
+    U = [binary_field(os.path.join(c, "0.1", "U")) for c in (plain, forced)]
+    p = [binary_field(os.path.join(c, "0.1", "p")).reshape(NY, NX) for c in (plain, forced)]
+    x = (np.arange(NX) + 0.5)*length/NX
+    want = -source*(length - x)
+    near("pressure change against -S (L - x), largest error / S L",
+         np.abs(p[1] - p[0] - want).max()/(source*length), 0, 1e-5)
+    near("velocity change / largest velocity", np.abs(U[1] - U[0]).max()/np.abs(U[0]).max(), 0, 1e-5)
+
+
 def test_bed_with_kEpsilon():
     print("fluidisedBed under k-epsilon: momentum balance, 2 ranks against 1")
     case = copy_tutorial("fluidisedBed", "bed-kEpsilon")
@@ -106,7 +137,7 @@ def test_bed_with_kEpsilon():
 
 
 def main():
-    checks.run([test_channel_against_pimpleFoam, test_bed_with_kEpsilon], sys.argv[1:])
+    checks.run([test_channel_against_pimpleFoam, test_fvOptions_source, test_bed_with_kEpsilon], sys.argv[1:])
     return checks.summary("turbulence")
 
 

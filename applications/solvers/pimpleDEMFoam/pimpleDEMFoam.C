@@ -37,6 +37,7 @@ Usage
 #include "singlePhaseTransportModel.H"
 #include "PhaseIncompressibleTurbulenceModel.H"
 #include "pimpleControl.H"
+#include "fvOptions.H"
 #include "particleFluidCoupling.H"
 #include "fluxReconstruction.H"
 #include "ddtFluxCorrection.H"

@@ -14,9 +14,9 @@ import sys
 import checks
 from checks import WORK, check, near, run_model
 from foamCase import (box_block_mesh, cell_centres, new_case, random_spheres,
-                      read_scalar_field, sh, sphere_volume, tet_case, write_dump)
+                      read_scalar_field, sh, sphere_volume, tet_case, void_fraction_models, write_dump)
 
-MODELS = ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion")
+MODELS = void_fraction_models()
 TOL = {"diffusion": 1e-9}
 
 

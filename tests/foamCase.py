@@ -13,6 +13,16 @@ ROOT = os.path.dirname(HERE)
 TEMPLATE = os.path.join(HERE, "cases", "template")
 
 
+def void_fraction_models():
+    """The void fraction models' names as `demVoidFraction -listModels` gives
+    them: the papers' six in their order, then any other registered model."""
+    out = subprocess.run(["demVoidFraction", "-listModels"], capture_output=True, text=True)
+    if out.returncode != 0 or not out.stdout.split():
+        raise SystemExit("foamCase: demVoidFraction -listModels failed (source etc/bashrc and build "
+                         "first): %s" % out.stderr.strip()[-300:])
+    return tuple(out.stdout.split())
+
+
 def sh(cmd, cwd, check=True):
     """Run a shell command with the project environment; return (rc, output)."""
     full = ". %s/etc/bashrc >/dev/null && %s" % (ROOT, cmd)

@@ -15,7 +15,7 @@ import checks
 from checks import WORK, check, field_checks, near, parallel_cases, run_model, serial_vs_parallel
 from foamCase import (ROOT, box_block_mesh, cell_centres, cell_volumes, new_case, parse_report,
                       random_spheres, read_scalar_field, set_coupling, sh, sphere_volume,
-                      tet_case, write_dump)
+                      tet_case, void_fraction_models, write_dump)
 
 L = 0.03
 LO, HI = (0, 0, 0), (L, L, L)
@@ -280,13 +280,29 @@ def test_alpha_min():
                     coupling="voidFractionModel centroid;\nalphaMin 0.4;\n")
     h = L / 10
     c, r = random_spheres(60, 0.0008, 0.0009, (4 * h,) * 3, (5 * h,) * 3, seed=8, gap=False)
-    for model in ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion"):
+    for model in void_fraction_models():
         alpha = field_checks("crowded cell", case, c, r, model, alpha_min=0.4)
         _, out = run_model(case, "particles.dump", model)
         check("crowded cell %s reports moved volume" % model, (parse_report(out)["moved"] or 0) > 0)
         # the crowded cell touches the processor boundary of the 2-way split
         serial_vs_parallel("crowded cell", case, "particles.dump", model,
                            1e-9 if model == "diffusion" else 1e-12)
+
+
+def test_list_models():
+    print("demVoidFraction -listModels: the papers' six in their order, each selectable")
+    papers = ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion")
+    listed = void_fraction_models()
+    check("the list starts with the papers' six in their order", listed[:6] == papers, "(%s)" % " ".join(listed))
+    case = new_case(os.path.join(WORK, "listModels"), box_block_mesh(LO, HI, (4, 4, 4)))
+    c, r = random_spheres(5, 0.0008, 0.0009, LO, HI, seed=3)
+    write_dump(os.path.join(case, "particles.dump"), c, r)
+    for model in listed:
+        rc, _ = run_model(case, "particles.dump", model)
+        check("-model %s is accepted" % model, rc == 0)
+    rc, out = sh("demVoidFraction -dump particles.dump -model nonsense", case, check=False)
+    refused = rc != 0 and all(m in out for m in listed)
+    check("-model nonsense is refused with the list", refused, "" if refused else out[-300:])
 
 
 def test_liggghts_in_process():
@@ -509,7 +525,7 @@ def test_centre_search():
 
 
 def main():
-    checks.run([test_closed_forms, test_thin_neighbour, test_meshes, test_fast_against_general, test_grid_with_holes, test_cyclic,
+    checks.run([test_list_models, test_closed_forms, test_thin_neighbour, test_meshes, test_fast_against_general, test_grid_with_holes, test_cyclic,
                 test_alpha_min, test_parallel, test_dump_series, test_previous_step, test_centre_search, test_liggghts_in_process,
                 test_bad_input], sys.argv[1:])
     return checks.summary("models")

@@ -15,10 +15,10 @@ import checks
 from checks import WORK, check, near, run_model, serial_vs_parallel
 from estimatorTests import gaussian_reference, relative_l1
 from foamCase import (box_block_mesh, cell_centres, cell_volumes, new_case, random_spheres,
-                      read_scalar_field, set_coupling, sh, write_dump)
+                      read_scalar_field, set_coupling, sh, void_fraction_models, write_dump)
 
 L, T, N = 0.03, 0.002, 10
-MODELS = ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion")
+MODELS = void_fraction_models()
 EMPTY = {"zmin": "type empty;", "zmax": "type empty;"}
 SHEAR = 0.3
 

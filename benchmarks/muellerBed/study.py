@@ -54,10 +54,10 @@ TUTORIAL = os.path.join(ROOT, "tutorials", "muellerBed")
 WORK = os.path.join(ROOT, "build", "muellerBed")
 RESULTS = os.path.join(HERE, "results")
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-from foamCase import set_dem, sh  # noqa: E402
+from foamCase import set_dem, sh, void_fraction_models  # noqa: E402
 import measurement  # noqa: E402
 
-MODELS = ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion")
+MODELS = void_fraction_models()
 MESH_MODELS = ("centroid", "analytical", "kernel")
 
 

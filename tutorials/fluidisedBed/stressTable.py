@@ -5,12 +5,16 @@ finished, the smallest void fraction, the largest continuity error and
 Courant number, the time-averaged pressure drop against the bed weight and
 its fluctuation. Writes stress.csv and stress.md."""
 import os
+import sys
 
 import numpy as np
 
 from bedData import bed_weight, log_extremes, pressure_drop
 
-MODELS = ["centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion"]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests"))
+from foamCase import void_fraction_models  # noqa: E402
+
+MODELS = list(void_fraction_models())
 rows = []
 for cells in ["1.5", "2", "3", "5"]:
     for model in MODELS:

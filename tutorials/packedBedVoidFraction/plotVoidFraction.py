@@ -19,10 +19,10 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests"))
-from foamCase import read_scalar_field  # noqa: E402
+from foamCase import read_scalar_field, void_fraction_models  # noqa: E402
 
 nx, ny, nz, H, W = 5, 5, 10, 0.04, 0.02
-MODELS = ("centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion")
+MODELS = void_fraction_models()
 fields = {m: np.array(read_scalar_field("0/voidfraction_%s" % m)).reshape(nz, ny, nx)
           for m in MODELS}
 

@@ -27,6 +27,7 @@ Usage
         [-deltaT DT] [-time RANGES] [-latest]
     demVoidFraction -liggghts ...   (runs couplingProperties' demScript in-process)
         [-case DIR] [-parallel]
+    demVoidFraction -listModels     (the models' names, one per line)
 
     -model overrides the dictionary's voidFractionModel; -repeat N calls the
     model N more times after a warm-up and reports the median time per call.
@@ -73,6 +74,12 @@ namespace
             " and take its particles instead of a dump"
         );
         argList::addOption("model", "name", "override the voidFractionModel");
+        argList::addBoolOption
+        (
+            "listModels",
+            "print the void fraction models' names, one per line (the papers' six in"
+            " their order, then any other), and exit"
+        );
         argList::addOption("repeat", "N", "time N further calls (median)");
         argList::addOption("name", "field", "write the field under this name");
         argList::addOption
@@ -103,7 +110,7 @@ namespace
         if (args.found("model"))
         {
             const string model(args["model"]);
-            const wordList models(voidFractionModel::dictionaryConstructorTablePtr_->sortedToc());
+            const wordList models(voidFractionModel::modelNames());
             if (!models.found(model))
             {
                 FatalErrorInFunction
@@ -189,7 +196,20 @@ int main(int argc, char *argv[])
     addOptions();
 
     noRepeatedOptions(argc, argv);
+    // the list alone on standard output, for scripts to read
+    for (int i = 1; i < argc; ++i)
+    {
+        if (std::string(argv[i]) == "-listModels") argList::noBanner();
+    }
     #include "setRootCase.H"
+    if (args.found("listModels"))
+    {
+        for (const word& m : voidFractionModel::modelNames())
+        {
+            Info<< m.c_str() << nl;
+        }
+        return 0;
+    }
     #include "createTime.H"
     #include "createMesh.H"
 

@@ -35,6 +35,26 @@ Foam::autoPtr<Foam::voidFractionModel> Foam::voidFractionModel::New
 }
 
 
+Foam::wordList Foam::voidFractionModel::modelNames()
+{
+    static const wordList papersOrder
+    ({
+        "centroid", "analytical", "voxel", "hybrid", "kernel", "diffusion"
+    });
+    const wordList registered(dictionaryConstructorTablePtr_->sortedToc());
+    DynamicList<word> names(registered.size());
+    for (const word& m : papersOrder)
+    {
+        if (registered.found(m)) names.append(m);
+    }
+    for (const word& m : registered)
+    {
+        if (!papersOrder.found(m)) names.append(m);
+    }
+    return wordList(std::move(names));
+}
+
+
 void Foam::voidFractionModel::addKeywords(keywordSchema& schema)
 {
     schema.add("voidFractionModel", keywordSchema::oneWord);

@@ -13,6 +13,8 @@ import os
 import re
 import sys
 
+import numpy as np
+
 import checks
 from checks import check
 from foamCase import ROOT
@@ -243,10 +245,58 @@ def test_spouted_bed_against_fine():
               abs(compare.gaps(own, other)[0] - by_hand) < 1e-12)
 
 
+def test_spouted_bed_closures():
+    print("the spouted bed's closure study: closures.csv, closureStatistics.csv and dragRatios.md from their sources")
+    here = os.path.join(ROOT, "benchmarks", "spoutedBed")
+    sys.path.insert(0, here)
+    import closures
+    import closureStatistics as stats
+    results = os.path.join(here, "results")
+    check("dragRatios.md is closures.py --drag-ratios",
+          open(os.path.join(results, "dragRatios.md")).read() == closures.drag_ratios() + "\n")
+    rows = list(csv.DictReader(open(os.path.join(results, "closures.csv"))))
+    references = {r["change"]: r for r in stats.reference_rows()}
+    for row in rows:
+        if row["change"] in references:
+            want = references[row["change"]]
+        else:
+            want = stats.summary_row(row["change"], os.path.join(results, "closures", row["change"]),
+                                     row["snapshots"], row["wall_s_per_sim_s"])
+        check("closures.csv '%s' is its recorded profiles' row" % row["change"],
+              {k: str(v) for k, v in want.items()} == row)
+    changes = [r["change"] for r in rows if r["change"] not in references]
+    check("closures.csv holds the references and at least one change", len(references) == 2 and changes,
+          "(%s)" % ", ".join(changes))
+    kept = list(csv.DictReader(open(os.path.join(results, "closureStatistics.csv"))))
+    piv = stats.measured()
+    for change in changes:
+        table = list(csv.DictReader(open(os.path.join(results, "closures", change, "statistics.csv"))))
+        profiles = {}
+        for r in table:
+            key = (r["statistic"], r["layer"], r["bin_mm"], float(r["H"]))
+            profiles.setdefault(key, ([], []))
+            profiles[key][0].append(float(r["x_mm"])/1000)
+            profiles[key][1].append(float(r["speed_m_s"]))
+        mean_speed = [float(r["speed_m_s"]) for r in table if r["statistic"] == "meanSpeed"]
+        of_mean = [float(r["speed_m_s"]) for r in table if r["statistic"] == "speedOfMean"]
+        check("%s: |mean v| <= mean |v| in every bin (%d bins)" % (change, len(of_mean)),
+              len(of_mean) == len(mean_speed) > 0 and
+              all(b <= a + 1e-5 for a, b in zip(mean_speed, of_mean) if a == a and b == b))
+        for r in [k for k in kept if k["change"] == change]:
+            for h in stats.HEIGHTS:
+                x, speed = profiles[(r["statistic"], r["layer"], r["bin_mm"], h)]
+                peak, mad = stats.against_piv((np.array(x), np.array(speed)), piv[h])
+                tag = "%03d" % round(100*h)
+                check("%s %s %s %s mm H%s: peak and difference from the PIV" % (change, r["statistic"], r["layer"],
+                                                                                r["bin_mm"], tag),
+                      abs(peak - float(r["peak_h" + tag])) < 1e-3 and abs(mad - float(r["mad_h" + tag])) < 1e-4)
+
+
 def main():
     checks.run([test_links, test_readme_numbers_in_linked_sections, test_result_tables, test_coarse_bed_tables_from_runs,
                 test_study_tables_from_csv, test_compression_tables_from_csv,
-                test_spouted_bed_summary_from_results, test_spouted_bed_against_fine], sys.argv[1:])
+                test_spouted_bed_summary_from_results, test_spouted_bed_against_fine, test_spouted_bed_closures],
+               sys.argv[1:])
     return checks.summary("docs")
 
 

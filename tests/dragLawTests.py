@@ -16,6 +16,7 @@ from scipy.optimize import brentq
 
 import checks
 from checks import WORK, check, near
+from dragLaws import LAWS
 from foamCase import ROOT, set_dem, sh
 
 RHO, NU = 1000.0, 1e-6
@@ -132,31 +133,8 @@ def write_case(case, law, formulation, bidisperse):
     return spheres
 
 
-# the laws, written here from the papers: the drag force on one sphere of
-# diameter d at void fraction a, interstitial slip u (the fluid's frame)
-def force_gidaspow(d, a, u):
-    # Gidaspow (1994): Ergun's coefficient below a = 0.8, shared by volume
-    beta = 150*(1 - a)**2*MU/(a*d*d) + 1.75*(1 - a)*RHO*u/d
-    return beta*math.pi*d**3/6/(1 - a)*u
-
-
-def force_difelice(d, a, u):
-    # Di Felice (1994): Cd (0.63 + 4.8/sqrt(Re))^2 at the superficial Re, a^-chi
-    re = a*RHO*u*d/MU
-    chi = 3.7 - 0.65*math.exp(-0.5*(1.5 - math.log10(re))**2)
-    cd = (0.63 + 4.8/math.sqrt(re))**2
-    return 0.5*cd*RHO*math.pi*d*d/4*(a*u)**2*a**-chi
-
-
-def force_beetstra(d, a, u):
-    # Beetstra, van der Hoef and Kuipers (2007): 3 pi mu d (a u) F(phi, Re)
-    phi, re = 1 - a, a*RHO*u*d/MU
-    F = (10*phi/a**2 + a**2*(1 + 1.5*math.sqrt(phi))
-         + 0.413*re/(24*a**2)*(1/a + 3*a*phi + 8.4*re**-0.343)/(1 + 10**(3*phi)*re**(-(1 + 4*phi)/2)))
-    return 3*math.pi*MU*d*a*u*F
-
-
-LAWS = {"Gidaspow": force_gidaspow, "DiFelice": force_difelice, "Beetstra": force_beetstra}
+def law_force(law, d, a, u):
+    return LAWS[law](d, a, u, RHO, MU)
 
 
 def law_gradient(law, spheres, Us):
@@ -166,7 +144,7 @@ def law_gradient(law, spheres, Us):
     vcell = CELL**3
     a = 1 - sum(math.pi*d**3/6 for d in per_cell)/vcell
     u = Us/a
-    return sum(LAWS[law](d, a, u) for d in per_cell)/(a*vcell), a
+    return sum(law_force(law, d, a, u) for d in per_cell)/(a*vcell), a
 
 
 def probe_gradients(case):

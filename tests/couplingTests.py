@@ -756,6 +756,51 @@ def test_fluidised_bed():
     forces_agree("scotch, 3 ranks = 1 rank", par, coupling_forces(serial_logs["analytical"])[:len(par)], 1e-6, 100)
 
 
+# the settling sphere's drag law and forces in the short form
+SHORT_FORCES = r"^dragModel\s+\w+;.*\n(.*\n)*?forces\s+\(.*\);"
+
+
+def forces_dictionary(props, cvm=None):
+    """Rewrites the short form (dragModel and the list of forces) of the
+    couplingProperties props as the forces dictionary it stands for"""
+    text = open(props).read()
+    law = re.search(r"^dragModel\s+(\w+);", text, re.M).group(1)
+    names = re.search(r"^forces\s+\((.*)\);", text, re.M).group(1).split()
+    body = "".join("    %s { %s}\n" % (n, "Cvm %g; " % cvm if n == "virtualMass" and cvm else "")
+                   for n in names)
+    edit(props, SHORT_FORCES, "forces\n{\n    drag { model %s; }\n%s}" % (law, body))
+
+
+def test_forces_dictionary():
+    print("the forces as a dictionary: the same run as their short form")
+    runs = {}
+    for form in ("short", "dictionary"):
+        case = copy_tutorial("settlingSphere", "settle-forces-" + form)
+        props = os.path.join(case, "constant", "couplingProperties")
+        edit(props, r"^forces\s+\(.*\);", "forces (pressureGradient buoyancy SaffmanMeiLift virtualMass);"
+             "\nvirtualMassCoefficient 0.6;")
+        if form == "dictionary":
+            edit(props, r"^virtualMassCoefficient.*\n", "")
+            forces_dictionary(props, cvm=0.6)
+        edit(os.path.join(case, "system", "controlDict"), r"^endTime\s+0.4;", "endTime 0.1;")
+        rc, out = sh("cp -r 0.orig 0 && blockMesh > log.blockMesh && pimpleDEMFoam > log.pimpleDEMFoam 2>&1",
+                     case, check=False)
+        check("settling sphere, forces in the %s form: run completed" % form, rc == 0, out[-800:] if rc else "")
+        if rc:
+            return
+        runs[form] = (history(case), coupling_forces(os.path.join(case, "log.pimpleDEMFoam")))
+    (h1, f1), (h2, f2) = runs["short"], runs["dictionary"]
+    check("the dictionary form's velocity history = the short form's, all 15 digits written (%d rows)"
+          % len(h1),
+          h1.shape == h2.shape and np.array_equal(h1, h2),
+          "(largest difference %.1e)" % (np.max(np.abs(h1 - h2)) if h1.shape == h2.shape else float("nan")))
+    check("the dictionary form's logged forces = the short form's (%d couplings)" % len(f1),
+          len(f1) > 0 and f1 == f2)
+    log = open(os.path.join(WORK, "settle-forces-dictionary", "log.pimpleDEMFoam")).read()
+    check("the dictionary form built its five forces, in its order",
+          "particleForceList: forces drag pressureGradient buoyancy SaffmanMeiLift virtualMass" in log)
+
+
 def test_bad_input():
     print("bad input: a clear error, a non-zero status, no hang")
     base = copy_tutorial("settlingSphere", "settle-bad")
@@ -799,6 +844,25 @@ def test_bad_input():
          "has no 'fix couple/cfd/force'"),
         ("particle outside the mesh", "DEM/in.parameters", r"^variable releaseZ .*$", "variable releaseZ equal 0.15",
          "particles have left the mesh"),
+        # the forces as a dictionary
+        ("dragModel beside the forces dictionary", props, r"^forces\s+\(.*\);",
+         "forces { drag { model Gidaspow; } buoyancy {} }", "dragModel is given with forces as a dictionary"),
+        ("forces dictionary without drag", props, SHORT_FORCES, "forces { buoyancy {} }",
+         "forces has no drag entry"),
+        ("unknown force in the dictionary", props, SHORT_FORCES, "forces { drag { model Gidaspow; } lift {} }",
+         "unknown entry lift in forces"),
+        ("unknown drag law in the dictionary", props, SHORT_FORCES, "forces { drag { model Stokes; } }",
+         "Unknown dragModel type Stokes"),
+        ("drag without its law", props, SHORT_FORCES, "forces { drag {} }", "'model' not found"),
+        ("misspelt entry of a force", props, SHORT_FORCES,
+         "forces { drag { model Gidaspow; } virtualMass { cvm 0.3; } }",
+         "unknown keyword cvm in virtualMass (did you mean Cvm?)"),
+        ("a force given a value", props, SHORT_FORCES, "forces { drag { model Gidaspow; } buoyancy yes; }",
+         "buoyancy in forces must be a dictionary"),
+        ("negative Cvm", props, SHORT_FORCES, "forces { drag { model Gidaspow; } virtualMass { Cvm -1; } }",
+         "Cvm must be zero or positive"),
+        ("pressure gradient force with formulation B", props, r"^formulation\s+A;\n(.*\n)*forces\s+\(.*\);",
+         "formulation B;\nforces { drag { model Gidaspow; } pressureGradient {} }", "remove pressureGradient"),
     ]
     for name, rel, pattern, replacement, needle in cases:
         case = os.path.join(WORK, "settle-bad-case")
@@ -1145,7 +1209,7 @@ def test_coupling_scale():
 
 def main():
     checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_lift_virtual_mass, test_restart, test_bed_restart, test_serial_parallel,
-                test_bad_input, test_parcels, test_parcels_2d, test_packed_bed,
+                test_forces_dictionary, test_bad_input, test_parcels, test_parcels_2d, test_packed_bed,
                 test_fluidised_bed, test_riser, test_spouted_bed, test_cylinder_bed, test_mueller_bed], sys.argv[1:])
     return checks.summary("coupling")
 

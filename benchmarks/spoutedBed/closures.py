@@ -42,16 +42,17 @@ MODEL = "analytical"
 
 
 def set_entry(path, key, value):
+    """key: a regular expression for what precedes the value on its line"""
     text = open(path).read()
-    changed, n = re.subn(r"(?m)^(%s\s+)[^;]+;" % key, r"\g<1>%s;" % value, text)
+    changed, n = re.subn(r"(?m)^(\s*%s\s+)[^;]+;" % key, r"\g<1>%s;" % value, text)
     if n != 1:
         sys.exit("closures.py: %s holds no single '%s' entry to change" % (path, key))
     open(path, "w").write(changed)
 
 
 CHANGES = {
-    "DiFelice": [("constant/couplingProperties", "dragModel", "DiFelice")],
-    "Beetstra": [("constant/couplingProperties", "dragModel", "Beetstra")],
+    "DiFelice": [("constant/couplingProperties", r"drag\s*\{\s*model", "DiFelice")],
+    "Beetstra": [("constant/couplingProperties", r"drag\s*\{\s*model", "Beetstra")],
     "gasLethe": [("constant/transportProperties", "rho", "1.0"),
                  ("constant/transportProperties", "nu", "1.81e-05")],
 }

@@ -12,10 +12,8 @@ Foam::keywordSchema Foam::couplingKeywords()
     keywordSchema schema("couplingProperties");
     particleFluidCoupling::addKeywords(schema);
     voidFractionModel::addKeywords(schema);
-    dragModel::addKeywords(schema);
     liggghtsCoupling::addKeywords(schema);
     parcelScaling::addKeywords(schema);
-    liftAndVirtualMass::addKeywords(schema);
     return schema;
 }
 

@@ -97,11 +97,9 @@ Foam::particleFluidCoupling::particleFluidCoupling
     rho_((checked(dict_), readDensity(mesh))),
     g_(g.value()),
     formulation_(formulation::A),
-    pressureGradientForce_(false),
-    buoyancy_(false),
     removeOutside_(false),
     parcels_(dict_, dict_.getOrDefault<bool>("twoDimensional", false)),
-    liftAndVirtualMass_(mesh, dict_, dict_.getOrDefault<wordList>("forces", wordList())),
+    nu_(0),
     demForceScale_(1),
     demStepsPerCoupling_(0),
     fluidStepsPerCoupling_(1),
@@ -156,14 +154,12 @@ Foam::particleFluidCoupling::particleFluidCoupling
         readChoice(dict_, "particleOutput", particleOutputNames, vtk::formatType::INLINE_BASE64)
     )
 {
-    readForces();
-
     // bad names fail before the DEM starts
-    drag_ = dragModel::New(dict_);
+    readForces();
     voidFraction_ = voidFractionModel::New(dict_, mesh);
     distributor_.reset(new particleDistributor(voidFraction_()));
     dem_.reset(new liggghtsCoupling(mesh.time(), dict_));
-    if (liftAndVirtualMass_.virtualMass()) dem_->trackAccelerations();
+    if (forces_->needsAccelerations()) dem_->trackAccelerations();
     checkDimensions();
     readTimeSteps();
 
@@ -181,7 +177,7 @@ void Foam::particleFluidCoupling::addKeywords(keywordSchema& schema)
 {
     schema.add("couplingInterval", keywordSchema::wholeNumber);
     schema.add("formulation", keywordSchema::oneWord);
-    schema.add("forces", keywordSchema::listOfWords);
+    particleForceList::addKeywords(schema);
     schema.add("particlesOutside", keywordSchema::oneWord);
     schema.add("reportExchange", keywordSchema::onOff);
     schema.add("particleOutput", keywordSchema::oneWord);
@@ -191,24 +187,10 @@ void Foam::particleFluidCoupling::addKeywords(keywordSchema& schema)
 void Foam::particleFluidCoupling::readForces()
 {
     formulation_ = readChoice(dict_, "formulation", formulationNames, formulation::A);
-    for (const word& f : dict_.getOrDefault<wordList>("forces", wordList()))
-    {
-        if (f == "pressureGradient") pressureGradientForce_ = true;
-        else if (f == "buoyancy") buoyancy_ = true;
-        else if (!liftAndVirtualMass::handles(f))
-        {
-            FatalIOErrorInFunction(dict_)
-                << "unknown entry " << f << " in forces; valid: "
-                << "(pressureGradient buoyancy SaffmanMeiLift virtualMass)"
-                << exit(FatalIOError);
-        }
-    }
-    if (pressureGradientForce_ && formulation_ == formulation::B)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "formulation B puts the pressure gradient into drag/alpha:"
-            << " remove pressureGradient from forces" << exit(FatalIOError);
-    }
+    forces_.reset
+    (
+        new particleForceList(dict_, {mesh_, formulation_ == formulation::B})
+    );
     removeOutside_ =
         readChoice(dict_, "particlesOutside", outsideActionNames, outsideAction::error)
      == outsideAction::remove;
@@ -365,6 +347,19 @@ void Foam::particleFluidCoupling::handleOutside()
 }
 
 
+Foam::particleForce::state Foam::particleFluidCoupling::forceState
+(
+    const volVectorField& U
+)
+{
+    return
+    {
+        U, rho_, nu_, g_, demStepsPerCoupling_*dem_->timeStep(), particles_,
+        voidFraction_->particleVolumes(), weightSum_, parcels_, voidFraction_(), dem_()
+    };
+}
+
+
 Foam::particleData Foam::particleFluidCoupling::particlesOnMaster() const
 {
     const particleHolders& holders = voidFraction_->holders();
@@ -406,6 +401,7 @@ void Foam::particleFluidCoupling::beginStep
     const scalar nu
 )
 {
+    nu_ = nu;
     if (fluidStep_ == 0)
     {
         alphaStart_ = alpha_.primitiveField();
@@ -413,7 +409,7 @@ void Foam::particleFluidCoupling::beginStep
         dem_->run(demStepsPerCoupling_);
         timeDem_ += clock_.timeIncrement();
         mapParticles();
-        setMomentumExchange(U, nu);
+        setMomentumExchange(U);
     }
 
     ++fluidStep_;
@@ -425,134 +421,19 @@ void Foam::particleFluidCoupling::beginStep
 }
 
 
-void Foam::particleFluidCoupling::setMomentumExchange
-(
-    const volVectorField& U,
-    const scalar nu
-)
+void Foam::particleFluidCoupling::setMomentumExchange(const volVectorField& U)
 {
-    // drag coefficients from the fluid state at each particle, spread
-    // to the cells as the implicit coefficient and its explicit part
-    const label n = particles_.size();
-    const scalarField& volumes = voidFraction_->particleVolumes();
     voidFraction_->weightSums(weightSum_);
-    const vectorField& v = particles_.velocities();
-    const scalar mu = rho_*nu;
-    beta_.setSize(n);
     scalarField cellBeta;
-    vectorField cellBetaV;
-    voidFraction_->gatherApplySpread
-    (
-        voidFraction_->voidFraction().primitiveField(), U.primitiveField(),
-        cellBeta, cellBetaV,
-        [&](const label i, const scalar alphaP, const vector& Up, scalar& b, vector& bv)
-        {
-            const scalar s = weightSum_[i];
-            scalar& beta = beta_[i];
-            if (s <= SMALL)
-            {
-                beta = 0;
-            }
-            else
-            {
-                const scalar a = alphaP/s;
-                const label type = particles_.type(i);
-                // a parcel: the law for one of its particles, scaled
-                beta = parcels_.dragFactor(type)*drag_->beta
-                (
-                    {
-                        parcels_.particleDiameter(2*particles_.radii()[i], type),
-                        parcels_.particleVolume(volumes[i], type),
-                        a, mag(Up/s - v[i]), rho_, mu
-                    }
-                );
-                if (formulation_ == formulation::B) beta /= a;
-            }
-            b = beta;
-            bv = beta*v[i];
-        }
-    );
-    if (liftAndVirtualMass_.virtualMass())
-    {
-        // in the order mapParticles read the particles in
-        const scalar interval = demStepsPerCoupling_*dem_->timeStep();
-        accelerations_ = dem_->meanAccelerations(interval, !Pstream::parRun());
-        voidFraction_->holders().toHeld(accelerations_);
-    }
-    if (liftAndVirtualMass_.active())
-    {
-        vectorField cellForce;
-        addLiftAndVirtualMass(U, nu, cellForce);
-        cellBetaV -= cellForce;
-    }
+    vectorField cellExplicit;
+    forces_->beginInterval(forceState(U), cellBeta, cellExplicit);
     const scalarField& V = mesh_.V();
     // the equations read the cell values only: the boundaries (and
     // their processor exchange) wait for a write time, see endStep
     Ksl_.primitiveFieldRef() = cellBeta/(rho_*V);
-    explicitSource_.primitiveFieldRef() = cellBetaV/(rho_*V);
-    forceSum_ = vectorField(n, Zero);
+    explicitSource_.primitiveFieldRef() = cellExplicit/(rho_*V);
+    forceSum_ = vectorField(particles_.size(), Zero);
     timeForces_ += clock_.timeIncrement();
-}
-
-
-void Foam::particleFluidCoupling::addLiftAndVirtualMass
-(
-    const volVectorField& U,
-    const scalar nu,
-    vectorField& cellForce
-)
-{
-    const scalar interval = demStepsPerCoupling_*dem_->timeStep();
-    if (liftAndVirtualMass_.virtualMass())
-    {
-        // the added mass lags one interval: stable while lighter than
-        // the particle
-        const scalar lightest = dem_->lightestDensity();
-        const scalar ratio =
-            liftAndVirtualMass_.Cvm()*rho_*parcels_.volumeForceFactor(1)/lightest;
-        if (ratio >= 1)
-        {
-            FatalIOErrorInFunction(dict_)
-                << "virtualMass: Cvm rho/rho_p = " << ratio << " for the lightest"
-                << " particles (" << lightest << " kg/m^3); the added mass is"
-                << " explicit and needs it below 1" << exit(FatalIOError);
-        }
-    }
-    vectorField vorticity, DUDt;
-    liftAndVirtualMass_.cellFields(U, interval, vorticity, DUDt);
-    vectorField Up, vorticityP, DUDtP;
-    voidFraction_->gather(U.primitiveField(), Up, vorticity, vorticityP);
-    voidFraction_->gather(DUDt, DUDtP);
-
-    const label n = particles_.size();
-    const scalarField& volumes = voidFraction_->particleVolumes();
-    const vectorField& v = particles_.velocities();
-    vectorField& F = liftAndVirtualMassForce_;
-    F.setSize(n);
-    // the force on each particle, and per unit of its weights what the
-    // fluid loses, so that the cells lose the force itself
-    vectorField perWeight(n, Zero);
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar s = weightSum_[i];
-        if (s <= SMALL)
-        {
-            F[i] = Zero;
-            continue;
-        }
-        const label type = particles_.type(i);
-        const scalar d = parcels_.particleDiameter(2*particles_.radii()[i], type);
-        const vector a(accelerations_.size() ? accelerations_[i] : vector::zero);
-        // the lift of one of the parcel's particles times their number, the
-        // added mass on the parcel's volume like the pressure gradient force
-        F[i] =
-            parcels_.dragFactor(type)
-           *liftAndVirtualMass_.lift(d, rho_, nu, Up[i]/s, vorticityP[i]/s, v[i])
-          + parcels_.volumeForceFactor(type)
-           *liftAndVirtualMass_.virtualMassForce(volumes[i], rho_, DUDtP[i]/s, a);
-        perWeight[i] = F[i]/s;
-    }
-    voidFraction_->spread(perWeight, cellForce);
 }
 
 
@@ -565,45 +446,30 @@ void Foam::particleFluidCoupling::addFluidForces
     vector& meanSum
 )
 {
-    const vectorField& v = particles_.velocities();
-    const scalarField& volumes = voidFraction_->particleVolumes();
-
-    // drag with the same weights as the fluid's, and the others; the sums
-    // over the particles (each once) in the same pass: this step's drag,
-    // and at the end of the interval the mean force
+    // the exchanged force with the same weights as the fluid's, and the
+    // others; the sums over the particles (each once) in the same pass:
+    // this step's exchanged force, and at the end of the interval the mean
+    const particleForce::state s(forceState(U));
+    forces_->prepareStep(s, p);
+    vectorField Up;
+    voidFraction_->gather(U.primitiveField(), Up);
     const scalar perStep = 1/scalar(fluidStepsPerCoupling_);
     const particleHolders& holders = voidFraction_->holders();
     vectorField& F = forceSum_;
     if (last) forceMean_.setSize(F.size());
-    auto force = [&](const label i, const vector& Up, const vector& gradP)
+    forAll(Up, i)
     {
-        vector drag(beta_[i]*(Up - weightSum_[i]*v[i]));
-        if (liftAndVirtualMassForce_.size()) drag += liftAndVirtualMassForce_[i];
-        vector f(F[i] + drag);
-        const scalar volume = parcels_.volumeForceFactor(particles_.type(i))*volumes[i];
-        if (pressureGradientForce_ && weightSum_[i] > SMALL)
-        {
-            f -= rho_*volume*gradP/weightSum_[i];
-        }
-        if (buoyancy_) f -= rho_*volume*g_;
+        const vector exchanged(forces_->exchanged(s, i, Up[i]));
+        vector f(F[i] + exchanged);
+        forces_->addOnParticle(s, i, f);
         F[i] = f;
         const bool counted = holders.counted(i);
-        if (counted) dragSum += drag;
+        if (counted) dragSum += exchanged;
         if (last)
         {
             forceMean_[i] = f*perStep;
             if (counted) meanSum += forceMean_[i];
         }
-    };
-    if (pressureGradientForce_)
-    {
-        voidFraction_->gatherApply(U.primitiveField(), fvc::grad(p)().primitiveField(), force);
-    }
-    else
-    {
-        vectorField Up;
-        voidFraction_->gather(U.primitiveField(), Up);
-        forAll(Up, i) force(i, Up[i], Zero);
     }
 }
 

@@ -88,6 +88,8 @@ const char* Foam::keywordSchema::describe(const kind k)
         case wholeNumber: return "one whole number";
         case onOff: return "a switch (true/false, on/off, yes/no)";
         case listOfWords: return "a list of words, each once (w1 w2 ...)";
+        case wordsOrDictionary:
+            return "a list of words, each once (w1 w2 ...), or a dictionary { ... }";
         case numberOrList: return "one number or a list of numbers (n1 n2 ...)";
     }
     return "";
@@ -123,6 +125,7 @@ void Foam::keywordSchema::add(const Foam::word& keyword, const keywordSchema& su
 std::string Foam::keywordSchema::problem(const entry& e, const kind k)
 {
     if (k == subDictionary) return e.isDict() ? "" : "is not a dictionary";
+    if (k == wordsOrDictionary && e.isDict()) return "";
     if (e.isDict()) return "is a dictionary";
     const ITstream& is = e.stream();
     if (is.empty()) return "has no value";
@@ -146,6 +149,7 @@ std::string Foam::keywordSchema::problem(const entry& e, const kind k)
             }
             return "is not a switch";
         case listOfWords:
+        case wordsOrDictionary:
         {
             if (!listItems(is, first, last)) return "is not a list (w1 w2 ...)";
             wordHashSet seen;

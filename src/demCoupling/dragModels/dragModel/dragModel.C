@@ -13,10 +13,14 @@ namespace Foam
 }
 
 
-Foam::autoPtr<Foam::dragModel> Foam::dragModel::New(const dictionary& dict)
+Foam::autoPtr<Foam::dragModel> Foam::dragModel::New
+(
+    const dictionary& dict,
+    const word& keyword
+)
 {
-    keywordSchema::checkKind(dict, "dragModel", keywordSchema::oneWord);
-    const word modelType(dict.get<word>("dragModel"));
+    keywordSchema::checkKind(dict, keyword, keywordSchema::oneWord);
+    const word modelType(dict.get<word>(keyword));
 
     Info<< "Selecting dragModel " << modelType << endl;
 
@@ -36,8 +40,3 @@ Foam::autoPtr<Foam::dragModel> Foam::dragModel::New(const dictionary& dict)
     return autoPtr<dragModel>(cstrIter()(dict));
 }
 
-
-void Foam::dragModel::addKeywords(keywordSchema& schema)
-{
-    schema.add("dragModel", keywordSchema::oneWord);
-}

@@ -35,6 +35,40 @@ namespace
         return dict;
     }
 
+    //- Each rank's values, joined on the master (empty elsewhere)
+    template<class Type>
+    Foam::Field<Type> onMaster(const Foam::Field<Type>& mine)
+    {
+        Foam::List<Foam::Field<Type>> all(Foam::Pstream::nProcs());
+        all[Foam::Pstream::myProcNo()] = mine;
+        Foam::Pstream::gatherList(all);
+        return Foam::ListListOps::combine<Foam::Field<Type>>(all, Foam::accessOp<Foam::Field<Type>>());
+    }
+
+    //- Into all, every named field of the counted particles, joined on
+    //  the master
+    template<class Type>
+    void allOnMaster
+    (
+        const Foam::particleFields<Type>& fields,
+        const Foam::labelUList& counted,
+        Foam::particleData& all
+    )
+    {
+        for (const Foam::word& name : fields.sortedToc())
+        {
+            Foam::Field<Type> joined(onMaster(Foam::Field<Type>(fields[name], counted)));
+            if (Foam::Pstream::master()) all.set(name, std::move(joined));
+        }
+    }
+
+    //- Every named field of the particles into the particle file
+    template<class Type>
+    void writeFields(Foam::particleVtkWriter& vtp, const Foam::particleFields<Type>& fields)
+    {
+        for (const Foam::word& name : fields.sortedToc()) vtp.write(name, fields[name]);
+    }
+
     Foam::scalar readDensity(const Foam::fvMesh& mesh)
     {
         const Foam::IOdictionary transport
@@ -368,27 +402,17 @@ Foam::particleData Foam::particleFluidCoupling::particlesOnMaster() const
     {
         if (holders.counted(i)) counted.append(i);
     }
-    List<pointField> x(Pstream::nProcs());
-    List<scalarField> r(Pstream::nProcs());
-    List<labelList> id(Pstream::nProcs());
-    List<vectorField> v(Pstream::nProcs());
-    const label me = Pstream::myProcNo();
-    x[me] = pointField(particles_.positions(), counted);
-    r[me] = scalarField(particles_.radii(), counted);
-    id[me] = labelList(UIndirectList<label>(particles_.ids(), counted));
-    v[me] = vectorField(particles_.velocities(), counted);
-    Pstream::gatherList(x);
-    Pstream::gatherList(r);
-    Pstream::gatherList(id);
-    Pstream::gatherList(v);
-    if (!Pstream::master()) return particleData();
     particleData all
     (
-        ListListOps::combine<pointField>(x, accessOp<pointField>()),
-        ListListOps::combine<scalarField>(r, accessOp<scalarField>()),
-        ListListOps::combine<labelList>(id, accessOp<labelList>())
+        onMaster(pointField(particles_.positions(), counted)),
+        onMaster(scalarField(particles_.radii(), counted)),
+        onMaster(labelField(UIndirectList<label>(particles_.ids(), counted)))
     );
-    all.setVelocities(ListListOps::combine<vectorField>(v, accessOp<vectorField>()));
+    // the named fields: the same names on every rank
+    allOnMaster(particles_.fields<scalar>(), counted, all);
+    allOnMaster(particles_.fields<vector>(), counted, all);
+    allOnMaster(particles_.fields<label>(), counted, all);
+    if (!Pstream::master()) return particleData();
     labelList order;
     sortedOrder(all.ids(), order);
     return all.reordered(order);
@@ -599,7 +623,9 @@ void Foam::particleFluidCoupling::write()
     vtp.writeGeometry(all.positions(), "time='" + runTime.timeName() + "'");
     vtp.write("radius", all.radii());
     vtp.write("id", all.ids());
-    vtp.write("velocity", all.velocities());
+    writeFields(vtp, all.fields<scalar>());
+    writeFields(vtp, all.fields<vector>());
+    writeFields(vtp, all.fields<label>());
     vtp.close();
 
     // a restarted run continues the series: later entries are dropped

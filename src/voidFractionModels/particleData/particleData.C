@@ -9,6 +9,9 @@
 #include "error.H"
 #include "UIndirectList.H"
 
+const Foam::word Foam::particleData::velocityName("velocity");
+const Foam::word Foam::particleData::typeFieldName("type");
+
 
 Foam::particleData::particleData
 (
@@ -31,27 +34,65 @@ Foam::particleData::particleData
 }
 
 
+namespace
+{
+    template<class Type>
+    const Foam::Field<Type>& fieldOrEmpty
+    (
+        const Foam::particleFields<Type>& table,
+        const Foam::word& name
+    )
+    {
+        static const Foam::Field<Type> none;
+        const auto iter = table.cfind(name);
+        return iter.found() ? *iter : none;
+    }
+}
+
+
+namespace Foam
+{
+    template<>
+    const particleFields<scalar>& particleData::fields<scalar>() const
+    {
+        return scalarFields_;
+    }
+
+    template<>
+    const particleFields<vector>& particleData::fields<vector>() const
+    {
+        return vectorFields_;
+    }
+
+    template<>
+    const particleFields<label>& particleData::fields<label>() const
+    {
+        return labelFields_;
+    }
+}
+
+
+const Foam::vectorField& Foam::particleData::velocities() const
+{
+    return fieldOrEmpty(vectorFields_, velocityName);
+}
+
+
 void Foam::particleData::setVelocities(vectorField&& velocities)
 {
-    if (velocities.size() != positions_.size())
-    {
-        FatalErrorInFunction
-            << velocities.size() << " velocities for " << positions_.size()
-            << " particles" << exit(FatalError);
-    }
-    velocities_ = std::move(velocities);
+    set(velocityName, std::move(velocities));
+}
+
+
+const Foam::labelList& Foam::particleData::types() const
+{
+    return fieldOrEmpty(labelFields_, typeFieldName);
 }
 
 
 void Foam::particleData::setTypes(labelList&& types)
 {
-    if (types.size() != positions_.size())
-    {
-        FatalErrorInFunction
-            << types.size() << " types for " << positions_.size()
-            << " particles" << exit(FatalError);
-    }
-    types_ = std::move(types);
+    set(typeFieldName, labelField(std::move(types)));
 }
 
 
@@ -63,8 +104,9 @@ Foam::particleData Foam::particleData::reordered(const labelUList& order) const
         scalarField(radii_, order),
         labelList(UIndirectList<label>(ids_, order))
     );
-    if (velocities_.size()) result.setVelocities(vectorField(velocities_, order));
-    if (types_.size()) result.setTypes(labelList(UIndirectList<label>(types_, order)));
+    reorderFields<scalar>(order, result);
+    reorderFields<vector>(order, result);
+    reorderFields<label>(order, result);
     return result;
 }
 

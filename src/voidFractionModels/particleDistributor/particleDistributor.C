@@ -10,6 +10,62 @@
 #include "UIndirectList.H"
 #include "processorPolyPatch.H"
 
+namespace
+{
+    //- The named fields of the particles send
+    template<class Type>
+    Foam::particleFields<Type> selected
+    (
+        const Foam::particleFields<Type>& all,
+        const Foam::labelUList& send
+    )
+    {
+        Foam::particleFields<Type> part(2*all.size());
+        forAllConstIters(all, iter) part.set(iter.key(), Foam::Field<Type>(iter.val(), send));
+        return part;
+    }
+
+    //- Into held, each named field of the held particles: from this rank's
+    //  own (those of kept) and from what each rank sent, placed as
+    //  constructMap says
+    template<class Type>
+    void heldFields
+    (
+        const Foam::particleFields<Type>& own,
+        const Foam::List<Foam::particleFields<Type>>& received,
+        const Foam::labelListList& constructMap,
+        const Foam::labelList& kept,
+        Foam::particleData& held
+    )
+    {
+        using namespace Foam;
+        const label me = Pstream::myProcNo();
+        wordHashSet names(own.toc());
+        for (const particleFields<Type>& from : received) names.insert(from.toc());
+        for (const word& name : names.sortedToc())
+        {
+            Field<Type> values(held.size());
+            label filled = 0;
+            forAll(constructMap, rank)
+            {
+                const bool mine = (rank == me);
+                const auto iter = (mine ? own : received[rank]).cfind(name);
+                if (!iter.found()) continue;
+                const labelList& to = constructMap[rank];
+                forAll(to, i) values[to[i]] = (*iter)[mine ? kept[i] : i];
+                filled += to.size();
+            }
+            if (filled != held.size())
+            {
+                FatalErrorInFunction
+                    << "some ranks' particles have the field " << name
+                    << " and others not" << abort(FatalError);
+            }
+            held.set(name, std::move(values));
+        }
+    }
+}
+
 Foam::particleDistributor::particleDistributor(const voidFractionModel& model)
 :
     model_(model),
@@ -186,17 +242,14 @@ void Foam::particleDistributor::incomingParticles::exchange
     const label me = Pstream::myProcNo();
     const pointField& x = owned.positions();
     const scalarField& r = owned.radii();
-    const vectorField& v = owned.velocities();
-    const labelList& type = owned.types();
-    const bool withU = (v.size() == owned.size() && owned.size());
-    const bool withTypes = (type.size() == owned.size() && owned.size());
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     receivedIds.setSize(nProcs);
     receivedFlags.setSize(nProcs);
     receivedX.setSize(nProcs);
     receivedR.setSize(nProcs);
-    receivedU.setSize(nProcs);
-    receivedTypes.setSize(nProcs);
+    receivedScalars.setSize(nProcs);
+    receivedVectors.setSize(nProcs);
+    receivedLabels.setSize(nProcs);
     forAll(subMap, rank)
     {
         const labelList& send = subMap[rank];
@@ -210,31 +263,22 @@ void Foam::particleDistributor::incomingParticles::exchange
         }
         UOPstream os(rank, buffers);
         os << ids << pointField(x, send) << scalarField(r, send)
-           << (withU ? vectorField(v, send) : vectorField())
-           << (withTypes ? labelList(UIndirectList<label>(type, send)) : labelList()) << flags[rank];
+           << selected(owned.fields<scalar>(), send) << selected(owned.fields<vector>(), send)
+           << selected(owned.fields<label>(), send) << flags[rank];
     }
     buffers.finishedSends(bytesFrom);
     const labelList& recvSizes = bytesFrom;
     nHeld = 0;
-    nWithU = 0;
-    nWithTypes = 0;
     forAll(receivedIds, rank)
     {
         if (rank != me && recvSizes[rank])
         {
             UIPstream is(rank, buffers);
-            is >> receivedIds[rank] >> receivedX[rank] >> receivedR[rank] >> receivedU[rank]
-               >> receivedTypes[rank] >> receivedFlags[rank];
+            is >> receivedIds[rank] >> receivedX[rank] >> receivedR[rank]
+               >> receivedScalars[rank] >> receivedVectors[rank] >> receivedLabels[rank]
+               >> receivedFlags[rank];
         }
         nHeld += receivedIds[rank].size();
-        nWithU += (rank == me && withU) ? receivedIds[rank].size() : receivedU[rank].size();
-        nWithTypes += (rank == me && withTypes) ? receivedIds[rank].size() : receivedTypes[rank].size();
-    }
-    if ((nWithU && nWithU != nHeld) || (nWithTypes && nWithTypes != nHeld))
-    {
-        FatalErrorInFunction
-            << "some ranks' particles have velocities or types and others' not"
-            << abort(FatalError);
     }
 }
 
@@ -258,14 +302,12 @@ Foam::particleHolders Foam::particleDistributor::distribute
     const label me = Pstream::myProcNo();
     const pointField& x = owned.positions();
     const scalarField& r = owned.radii();
-    const vectorField& v = owned.velocities();
-    const labelList& type = owned.types();
     labelListList subMap(destinations(owned));
     const labelListList flags(particleHolders::sentFlags(owned.size(), subMap));
     incomingParticles in;
     in.exchange(owned, subMap, flags);
     const List<labelList>& receivedIds = in.receivedIds;
-    const label nHeld = in.nHeld, nWithU = in.nWithU, nWithTypes = in.nWithTypes;
+    const label nHeld = in.nHeld;
     last_.owned = owned.size();
     last_.held = nHeld;
     last_.sentTo.setSize(nProcs);
@@ -282,8 +324,7 @@ Foam::particleHolders Foam::particleDistributor::distribute
     labelListList constructMap(nProcs);
     pointField heldX(nHeld);
     scalarField heldR(nHeld);
-    labelList heldIds(nHeld), heldFlags(nHeld), heldTypes(nWithTypes);
-    vectorField heldU(nWithU);
+    labelList heldIds(nHeld), heldFlags(nHeld);
     k = 0;
     forAll(receivedIds, rank)
     {
@@ -292,8 +333,6 @@ Foam::particleHolders Foam::particleDistributor::distribute
         const labelList& send = subMap[me];
         const pointField& fromX = mine ? x : in.receivedX[rank];
         const scalarField& fromR = mine ? r : in.receivedR[rank];
-        const vectorField& fromU = mine ? v : in.receivedU[rank];
-        const labelList& fromType = mine ? type : in.receivedTypes[rank];
         labelList& construct = constructMap[rank];
         construct.setSize(receivedIds[rank].size());
         forAll(construct, i)
@@ -305,19 +344,18 @@ Foam::particleHolders Foam::particleDistributor::distribute
             heldR[to] = fromR[from];
             heldIds[to] = receivedIds[rank][i];
             heldFlags[to] = in.receivedFlags[rank][i];
-            if (nWithU) heldU[to] = fromU[from];
-            if (nWithTypes) heldTypes[to] = fromType[from];
         }
     }
 
-    particleHolders holders
+    held = particleData(std::move(heldX), std::move(heldR), std::move(heldIds));
+    // the named fields go where the particles went
+    heldFields(owned.fields<scalar>(), in.receivedScalars, constructMap, subMap[me], held);
+    heldFields(owned.fields<vector>(), in.receivedVectors, constructMap, subMap[me], held);
+    heldFields(owned.fields<label>(), in.receivedLabels, constructMap, subMap[me], held);
+    return particleHolders
     (
         owned.size(), std::move(subMap), flags, std::move(constructMap), heldFlags
     );
-    held = particleData(std::move(heldX), std::move(heldR), std::move(heldIds));
-    if (nWithU) held.setVelocities(std::move(heldU));
-    if (nWithTypes) held.setTypes(std::move(heldTypes));
-    return holders;
 }
 
 

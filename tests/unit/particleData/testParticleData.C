@@ -10,9 +10,9 @@ Application
 
 Description
     particleData against values written in the test: a reordering keeps
-    each particle's position, radius, id and velocity together; lists of
-    different sizes and a
-    velocity list of the wrong size are FatalErrors saying so;
+    each particle's position, radius, id, velocity, type and a registered
+    field together; lists of different sizes, a field of the wrong size and
+    a field not set are FatalErrors saying so;
     readLiggghtsDump reads the first snapshot of a dump of two. Ends with
     'particleData: N passed, M failed'.
 
@@ -73,7 +73,28 @@ int main()
     (
         "velocities of the wrong count: FatalError",
         [&] { p.setVelocities(vectorField(2, Zero)); },
-        "2 velocities for 3 particles"
+        "2 values of velocity for 3 particles"
+    );
+
+    // a field a model registers goes with its particles
+    p.set("temperature", scalarField({300, 310, 320}));
+    p.setTypes(labelList({1, 2, 1}));
+    const particleData t(p.reordered(labelList({2, 1})));
+    near("a registered field, reordered: the old third's", t.field<scalar>("temperature")[0], 320, 0);
+    near("a registered field, reordered: the old second's", t.field<scalar>("temperature")[1], 310, 0);
+    near("types, reordered", t.type(1), 2, 0);
+    near("the fields of a kind: velocity only among the vectors", t.fields<vector>().size(), 1, 0);
+    refused
+    (
+        "a field not set: FatalError naming it",
+        [&] { t.field<scalar>("heatFlux"); },
+        "no field heatFlux"
+    );
+    refused
+    (
+        "a registered field of the wrong count: FatalError naming it",
+        [&] { p.set("temperature", scalarField(1, 300.0)); },
+        "1 values of temperature for 3 particles"
     );
 
     const fileName dir(getEnv("VFM_PROJECT_DIR")/"build"/"unit"/"particleData");

@@ -135,10 +135,6 @@ Foam::particleFluidCoupling::particleFluidCoupling
     parcels_(dict_, dict_.getOrDefault<bool>("twoDimensional", false)),
     nu_(0),
     demForceScale_(1),
-    demStepsPerCoupling_(0),
-    fluidStepsPerCoupling_(1),
-    fluidStep_(0),
-    nCouplings_(0),
     alpha_
     (
         IOobject
@@ -174,14 +170,6 @@ Foam::particleFluidCoupling::particleFluidCoupling
         dimensionedVector("zero", dimAcceleration, Zero),
         zeroGradientFvPatchVectorField::typeName
     ),
-    timeDem_(0),
-    timeExchange_(0),
-    timeVoidFraction_(0),
-    timeForces_(0),
-    timeFluid_(0),
-    worstMomentumError_(0),
-    totalForce_(Zero),
-    mostHeld_(0),
     reportExchange_(dict_.getOrDefault<bool>("reportExchange", false)),
     particleOutput_
     (
@@ -195,7 +183,7 @@ Foam::particleFluidCoupling::particleFluidCoupling
     dem_.reset(new liggghtsCoupling(mesh.time(), dict_));
     if (forces_->needsAccelerations()) dem_->trackAccelerations();
     checkDimensions();
-    readTimeSteps();
+    schedule_.reset(new couplingSchedule(mesh.time(), dict_, dem_->timeStep()));
 
     // the initial state: the field the first interval starts from
     mapParticles();
@@ -209,7 +197,7 @@ Foam::particleFluidCoupling::particleFluidCoupling
 
 void Foam::particleFluidCoupling::addKeywords(keywordSchema& schema)
 {
-    schema.add("couplingInterval", keywordSchema::wholeNumber);
+    couplingSchedule::addKeywords(schema);
     schema.add("formulation", keywordSchema::oneWord);
     particleForceList::addKeywords(schema);
     schema.add("particlesOutside", keywordSchema::oneWord);
@@ -281,62 +269,16 @@ void Foam::particleFluidCoupling::checkParcels() const
 }
 
 
-void Foam::particleFluidCoupling::readTimeSteps()
-{
-    const Time& runTime = mesh_.time();
-    const label interval = dict_.get<label>("couplingInterval");
-    if (interval < 1)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "couplingInterval must be a positive number of DEM steps, not "
-            << interval << exit(FatalIOError);
-    }
-    if (runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false))
-    {
-        FatalIOErrorInFunction(runTime.controlDict())
-            << "adjustTimeStep: the fluid step must stay a fixed multiple or"
-            << " divisor of the coupling time" << exit(FatalIOError);
-    }
-    const scalar couplingTime = interval*dem_->timeStep();
-    const scalar dtFluid = runTime.deltaTValue();
-    const scalar perCoupling = couplingTime/dtFluid;
-    const scalar perFluid = dtFluid/couplingTime;
-    const scalar tol = 1e-6;
-    if (perCoupling >= 1 - tol && mag(perCoupling - round(perCoupling)) < tol*perCoupling)
-    {
-        fluidStepsPerCoupling_ = label(round(perCoupling));
-        demStepsPerCoupling_ = interval;
-    }
-    else if (perFluid >= 1 && mag(perFluid - round(perFluid)) < tol*perFluid)
-    {
-        fluidStepsPerCoupling_ = 1;
-        demStepsPerCoupling_ = interval*label(round(perFluid));
-    }
-    else
-    {
-        FatalIOErrorInFunction(dict_)
-            << "the coupling time " << couplingTime << " s (couplingInterval "
-            << interval << " x DEM step " << dem_->timeStep() << " s) is not a"
-            << " whole multiple or divisor of the fluid step " << dtFluid
-            << " s (controlDict deltaT)" << exit(FatalIOError);
-    }
-    // a continued run goes on counting from its start time
-    nCouplings_ = label(round(runTime.value()/(demStepsPerCoupling_*dem_->timeStep())));
-    Info<< "particleFluidCoupling: " << demStepsPerCoupling_ << " DEM steps and "
-        << fluidStepsPerCoupling_ << " fluid steps per coupling" << endl;
-}
-
-
 void Foam::particleFluidCoupling::mapParticles()
 {
-    clock_.timeIncrement();
+    diagnostics_.mark();
     // a serial run reads them in the id order it holds them in
     particleData owned(dem_->particles(!Pstream::parRun()));
     if (Pstream::parRun()) ownedIds_ = owned.ids();
     particleHolders holders(distributor_->distribute(std::move(owned), particles_));
-    timeExchange_ += clock_.timeIncrement();
+    diagnostics_.charge(couplingDiagnostics::exchange);
     voidFraction_->update(particles_, std::move(holders));
-    timeVoidFraction_ += clock_.timeIncrement();
+    diagnostics_.charge(couplingDiagnostics::voidFraction);
     handleOutside();
 }
 
@@ -388,7 +330,7 @@ Foam::particleForce::state Foam::particleFluidCoupling::forceState
 {
     return
     {
-        U, rho_, nu_, g_, demStepsPerCoupling_*dem_->timeStep(), particles_,
+        U, rho_, nu_, g_, schedule_->interval(), particles_,
         voidFraction_->particleVolumes(), weightSum_, parcels_, voidFraction_(), dem_()
     };
 }
@@ -426,22 +368,21 @@ void Foam::particleFluidCoupling::beginStep
 )
 {
     nu_ = nu;
-    if (fluidStep_ == 0)
+    if (schedule_->startsInterval())
     {
         alphaStart_ = alpha_.primitiveField();
-        clock_.timeIncrement();
-        dem_->run(demStepsPerCoupling_);
-        timeDem_ += clock_.timeIncrement();
+        diagnostics_.mark();
+        dem_->run(schedule_->demSteps());
+        diagnostics_.charge(couplingDiagnostics::dem);
         mapParticles();
         setMomentumExchange(U);
     }
 
-    ++fluidStep_;
-    const scalar f = scalar(fluidStep_)/fluidStepsPerCoupling_;
+    const scalar f = schedule_->beginFluidStep();
     alpha_.primitiveFieldRef() =
         (1 - f)*alphaStart_ + f*voidFraction_->voidFraction().primitiveField();
     alpha_.correctBoundaryConditions();
-    clock_.timeIncrement();
+    diagnostics_.mark();
 }
 
 
@@ -457,7 +398,7 @@ void Foam::particleFluidCoupling::setMomentumExchange(const volVectorField& U)
     Ksl_.primitiveFieldRef() = cellBeta/(rho_*V);
     explicitSource_.primitiveFieldRef() = cellExplicit/(rho_*V);
     forceSum_ = vectorField(particles_.size(), Zero);
-    timeForces_ += clock_.timeIncrement();
+    diagnostics_.charge(couplingDiagnostics::forces);
 }
 
 
@@ -477,7 +418,7 @@ void Foam::particleFluidCoupling::addFluidForces
     forces_->prepareStep(s, p);
     vectorField Up;
     voidFraction_->gather(U.primitiveField(), Up);
-    const scalar perStep = 1/scalar(fluidStepsPerCoupling_);
+    const scalar perStep = 1/scalar(schedule_->fluidSteps());
     const particleHolders& holders = voidFraction_->holders();
     vectorField& F = forceSum_;
     if (last) forceMean_.setSize(F.size());
@@ -531,14 +472,10 @@ void Foam::particleFluidCoupling::checkMomentumBalance
         sums[9 + Pstream::myProcNo()] = particles_.size();
     }
     reduce(sums, sumOp<scalarField>());
-    const vector particlesGained(get(0)), fluidLost(get(3));
-    const scalar error =
-        mag(fluidLost - particlesGained)/max(mag(particlesGained), VSMALL);
-    worstMomentumError_ = max(worstMomentumError_, error);
+    diagnostics_.momentumBalance(get(0), get(3));
     if (last)
     {
-        totalForce_ = get(6);
-        mostHeld_ = label(max(SubList<scalar>(sums, nProcs, 9)));
+        diagnostics_.interval(get(6), label(max(SubList<scalar>(sums, nProcs, 9))));
     }
 }
 
@@ -549,10 +486,10 @@ void Foam::particleFluidCoupling::endStep
     const volScalarField& p
 )
 {
-    timeFluid_ += clock_.timeIncrement();
+    diagnostics_.charge(couplingDiagnostics::fluid);
 
     // at the end of the interval the mean force goes to the DEM
-    const bool last = (fluidStep_ == fluidStepsPerCoupling_);
+    const bool last = schedule_->endsInterval();
     vector dragSum(Zero), meanSum(Zero);
     addFluidForces(U, p, last, dragSum, meanSum);
     checkMomentumBalance(U, last, dragSum, meanSum);
@@ -561,7 +498,7 @@ void Foam::particleFluidCoupling::endStep
         Ksl_.correctBoundaryConditions();
         explicitSource_.correctBoundaryConditions();
     }
-    timeForces_ += clock_.timeIncrement();
+    diagnostics_.charge(couplingDiagnostics::forces);
 
     if (last)
     {
@@ -572,7 +509,7 @@ void Foam::particleFluidCoupling::endStep
 
 void Foam::particleFluidCoupling::pushForces()
 {
-    clock_.timeIncrement();
+    diagnostics_.mark();
     vectorField& F = forceMean_;
     if (demForceScale_ != 1) F *= demForceScale_;
     const particleHolders& holders = voidFraction_->holders();
@@ -586,25 +523,11 @@ void Foam::particleFluidCoupling::pushForces()
     {
         dem_->setForces(particles_.ids(), F);
     }
-    timeExchange_ += clock_.timeIncrement();
+    diagnostics_.charge(couplingDiagnostics::exchange);
 
-    const mappingStatistics& s = voidFraction_->stats();
-    Info<< "coupling " << nCouplings_ << ": " << s.nParticles
-        << " particles (at most " << mostHeld_ << " on a rank), seconds DEM " << timeDem_
-        << " exchange " << timeExchange_
-        << " voidFraction " << timeVoidFraction_
-        << " forces " << timeForces_
-        << " fluid " << timeFluid_
-        << "; alpha " << s.minVoidFraction << ".." << s.maxVoidFraction
-        << ", momentum balance " << worstMomentumError_
-        << "; total fluid force on the particles " << totalForce_
-        << "; wall seconds since the last coupling " << couplingClock_.timeIncrement() << endl;
+    diagnostics_.log(schedule_->nCouplings(), voidFraction_->stats());
     if (reportExchange_) distributor_->writeExchange(Info);
-
-    ++nCouplings_;
-    fluidStep_ = 0;
-    timeDem_ = timeExchange_ = timeVoidFraction_ = timeForces_ = timeFluid_ = 0;
-    worstMomentumError_ = 0;
+    schedule_->endInterval();
 }
 
 

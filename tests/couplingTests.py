@@ -225,6 +225,122 @@ def saffman_mei_lift(slip, shear, diameter):
     return 6.46*mu*(diameter/2)**2*slip*math.sqrt(shear/nu)*f
 
 
+def nusselt(correlation, re, pr, alpha):
+    """the two correlations as their papers give them: Ranz and Marshall
+    (1952), a single sphere; Gunn (1978), fixed and fluidised beds"""
+    if correlation == "RanzMarshall":
+        return 2 + 0.6*re**0.5*pr**(1/3)
+    return ((7 - 10*alpha + 5*alpha**2)*(1 + 0.7*re**0.2*pr**(1/3))
+            + (1.33 - 2.4*alpha + 1.2*alpha**2)*re**0.7*pr**(1/3))
+
+
+def sphere_heating(correlation, t):
+    """the 1 mm glass sphere (300 K, c_p 840) held in the Couette flow of
+    water at 350 K (tests/cases/sphereHeating): the lumped solution
+    T = Tg + (T0 - Tg) exp(-t hA/(m c_p)) with h from the correlation at
+    the fluid velocity and void fraction of the cell that holds it"""
+    nu_w, rho_w, cp_w, kappa_w = 1e-6, 1000.0, 4180.0, 0.6
+    volume = math.pi/6*d**3
+    alpha = 1 - volume/0.008**3
+    re = alpha*(0.05*0.044/0.096)*d/nu_w
+    pr = nu_w*rho_w*cp_w/kappa_w
+    ha = nusselt(correlation, re, pr, alpha)*kappa_w/d*math.pi*d**2
+    tau = rho_p*volume*840.0/ha
+    return 350.0 - 50.0*np.exp(-np.maximum(t, 0)/tau)
+
+
+def read_internal(path, n):
+    text = open(path).read()
+    m = re.search(r"internalField\s+uniform\s+(\S+);", text)
+    if m:
+        return np.full(n, float(m.group(1)))
+    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s+\d+\s*\(([^)]*)\)", text)
+    return np.array(m.group(1).split(), float)
+
+
+def test_heat_transfer():
+    print("heat transfer: a sphere heating in a uniform flow against the lumped solution")
+    interval = 5e-4
+    runs = {}
+    for correlation in ("RanzMarshall", "Gunn"):
+        case = os.path.join(WORK, "sphere-heating-" + correlation)
+        shutil.rmtree(case, ignore_errors=True)
+        shutil.copytree(os.path.join(ROOT, "tests", "cases", "sphereHeating"), case)
+        edit(os.path.join(case, "constant", "couplingProperties"), r"correlation\s+\w+;",
+             "correlation %s;" % correlation)
+        rc, out = sh("blockMesh > log.blockMesh && pimpleDEMFoam > log.pimpleDEMFoam 2>&1", case, check=False)
+        check("%s: run completed" % correlation, rc == 0, out[-800:] if rc else "")
+        if rc:
+            return
+        runs[correlation] = case
+    for correlation, case in runs.items():
+        data = np.loadtxt(os.path.join(case, "DEM", "post", "temperature.txt"))
+        t, temperature = data[:, 0], data[:, 1]
+        other = "Gunn" if correlation == "RanzMarshall" else "RanzMarshall"
+        # the heat of an interval reaches the DEM in the next, as the forces do
+        right = np.max(np.abs(temperature - sphere_heating(correlation, t - interval)))/50
+        unlagged = np.max(np.abs(temperature - sphere_heating(correlation, t)))/50
+        wrong = np.max(np.abs(temperature - sphere_heating(other, t - interval)))/50
+        check("%s: the sphere's temperature within 1 %% of the lumped solution with its Nusselt number, "
+              "0 to 1.9 time constants (one coupling interval behind)" % correlation, right < 0.01,
+              "(%.3f %% of the difference; %.2f %% without the interval's lag)" % (100*right, 100*unlagged))
+        check("%s: the lumped solution with %s's Nusselt number is more than 3 %% away (the check "
+              "discriminates)" % (correlation, other), wrong > 0.03, "(%.2f %%)" % (100*wrong))
+        log = open(os.path.join(case, "log.pimpleDEMFoam")).read()
+        balances = [float(x) for x in re.findall(r"^heat exchange \d+: .* balance (\S+)$", log, re.M)]
+        check("%s: heat the sphere receives = heat the water loses, every fluid step (%d couplings)"
+              % (correlation, len(balances)), len(balances) == 300 and max(balances) < 1e-12,
+              "(worst %.1e)" % max(balances) if balances else "")
+        # energy: the water's change, the sphere's, and the last interval's heat the DEM has yet to take
+        gas = 1000*4180*0.008**3*np.sum(read_internal(os.path.join(case, "0.15", "alpha"), 300)
+                                         * (read_internal(os.path.join(case, "0.15", "T"), 300) - 350))
+        sphere = rho_p*math.pi/6*d**3*840*(temperature[-1] - 300)
+        pending = float(re.findall(r"^heat exchange \d+: to the particles (\S+) W", log, re.M)[-1])*interval
+        energy = abs(gas + sphere + pending)/sphere
+        check("%s: energy of water and sphere conserved over the run" % correlation, energy < 1e-6,
+              "(%.1e of the heat exchanged)" % energy)
+
+    # serial = 2 ranks (the mesh split in x), the linear solvers converged to
+    # round-off so that only the decomposition differs
+    case = runs["RanzMarshall"]
+    edit(os.path.join(case, "system", "fvSolution"), r"tolerance 1e-1\d; relTol [0-9.]+;", "tolerance 1e-14; relTol 0;")
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (2 1 1); }\n")
+    sh("rm -rf 0.[0-9]* DEM/post && pimpleDEMFoam > log.serial 2>&1", case)
+    serial = np.loadtxt(os.path.join(case, "DEM", "post", "temperature.txt"))
+    rc, out = sh("rm -rf 0.[0-9]* DEM/post && decomposePar -force > log.decomposePar && "
+                 "timeout 300 mpirun -np 2 pimpleDEMFoam -parallel > log.parallel 2>&1", case, check=False)
+    check("heat transfer on 2 ranks: run completed", rc == 0, out[-800:] if rc else "")
+    if rc == 0:
+        par = np.loadtxt(os.path.join(case, "DEM", "post", "temperature.txt"))
+        diff = np.max(np.abs(par[:, 1] - serial[:, 1]))/50 if par.shape == serial.shape else float("inf")
+        # equal to 1e-13 for 100 couplings; then the pressure of the sphere's
+        # wake, a field near zero whose solver tolerance is relative, parts them
+        check("heat transfer: 2 ranks = serial (the sphere's temperature history)", diff < 1e-7,
+              "(%.1e of the difference)" % diff)
+
+    # bad entries: a clear error naming what is wrong
+    bad = [
+        ("unknown correlation", "constant/couplingProperties", r"correlation\s+\w+;", "correlation Whitaker;",
+         "Unknown heatTransferCorrelation type Whitaker"),
+        ("negative gas heat capacity", "constant/transportProperties", r"^Cp\s+\S+;", "Cp -4180;",
+         "Cp must be positive"),
+        ("no gas conductivity", "constant/transportProperties", r"^kappa\s+\S+;.*$", "", "kappa"),
+        ("a DEM without the gas's heat", "DEM/in.liggghts", r"^fix cfd3 all couple/cfd/convection.*$", "",
+         "has no per-particle convectiveHeatFlux"),
+        ("a DEM without heat capacities", "DEM/in.liggghts", r"^fix m6 .*$", "", "thermalCapacity"),
+    ]
+    for name, rel, pattern, replacement, needle in bad:
+        case = os.path.join(WORK, "sphere-heating-bad")
+        shutil.rmtree(case, ignore_errors=True)
+        shutil.copytree(os.path.join(ROOT, "tests", "cases", "sphereHeating"), case)
+        edit(os.path.join(case, rel), pattern, replacement)
+        rc, out = sh("blockMesh > log.blockMesh && timeout 120 pimpleDEMFoam", case, check=False)
+        check("%s: error says '%s'" % (name, needle), rc not in (0, 124) and needle in out,
+              "" if needle in out else out[-600:])
+
+
 def test_lift_virtual_mass():
     print("lift on a sphere in Couette flow (Saffman-Mei), virtual mass of a sphere released from rest")
     for lid in (0.05, 0.2):
@@ -1208,7 +1324,7 @@ def test_coupling_scale():
 
 
 def main():
-    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_lift_virtual_mass, test_restart, test_bed_restart, test_serial_parallel,
+    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_lift_virtual_mass, test_heat_transfer, test_restart, test_bed_restart, test_serial_parallel,
                 test_forces_dictionary, test_bad_input, test_parcels, test_parcels_2d, test_packed_bed,
                 test_fluidised_bed, test_riser, test_spouted_bed, test_cylinder_bed, test_mueller_bed], sys.argv[1:])
     return checks.summary("coupling")

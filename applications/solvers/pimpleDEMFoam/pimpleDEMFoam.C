@@ -84,6 +84,11 @@ int main(int argc, char *argv[])
             }
         }
 
+        if (coupling.heat())
+        {
+            #include "TEqn.H"
+        }
+
         coupling.endStep(U, p);
 
         runTime.write();

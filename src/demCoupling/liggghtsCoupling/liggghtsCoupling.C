@@ -24,6 +24,7 @@
 #include "domain.h"
 #include "modify.h"
 #include "fix_property_atom.h"
+#include "fix_property_global.h"
 
 namespace
 {
@@ -77,7 +78,8 @@ Foam::liggghtsCoupling::liggghtsCoupling(const Time& runTime, const dictionary& 
     lmp_(nullptr),
     ownMpi_(false),
     setUpNextRun_(false),
-    restart_(restartFile(runTime))
+    restart_(restartFile(runTime)),
+    heat_(false)
 {
     // a run starting from a time the solver wrote continues the DEM from
     // the restart file written with it
@@ -396,6 +398,20 @@ Foam::particleData Foam::liggghtsCoupling::particles(const bool inIdOrder) const
     particleData result(pointField(std::move(x)), scalarField(std::move(r)), std::move(id));
     result.setVelocities(vectorField(std::move(v)));
     result.setTypes(std::move(type));
+    if (heat_)
+    {
+        const double* T = heatArray("Temp");
+        const scalarList cp(thermalCapacities());
+        scalarField temperature(n), capacity(n);
+        for (label k = 0; k < n; ++k)
+        {
+            const label i = inIdOrder ? order[k] : k;
+            temperature[k] = T[i];
+            capacity[k] = atom.rmass[i]*cp[atom.type[i] - 1];
+        }
+        result.set("temperature", std::move(temperature));
+        result.set("heatCapacity", std::move(capacity));
+    }
     return result;
 }
 
@@ -552,16 +568,17 @@ double** Foam::liggghtsCoupling::forceArray() const
 }
 
 
-void Foam::liggghtsCoupling::setForces
+template<class Set, class Clear>
+void Foam::liggghtsCoupling::setOwned
 (
     const labelList& ids,
-    const vectorField& forces
-)
+    const Set& set,
+    const Clear& clear
+) const
 {
-    double** f = forceArray();
-    LAMMPS_NS::Atom& atom = *lmp_->atom;
-    // the forces of the atoms as particles() listed them (no DEM step
-    // since): no id lookup
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    // the atoms as particles() listed them (no DEM step since): no id
+    // lookup
     bool inLocalOrder = (ids.size() == atom.nlocal);
     for (label i = 0; inLocalOrder && i < atom.nlocal; ++i)
     {
@@ -569,26 +586,111 @@ void Foam::liggghtsCoupling::setForces
     }
     if (inLocalOrder)
     {
-        for (label i = 0; i < atom.nlocal; ++i)
-        {
-            f[i][0] = forces[i].x();
-            f[i][1] = forces[i].y();
-            f[i][2] = forces[i].z();
-        }
+        for (label i = 0; i < atom.nlocal; ++i) set(i, i);
         return;
     }
-    for (label i = 0; i < atom.nlocal; ++i)
-    {
-        f[i][0] = f[i][1] = f[i][2] = 0;
-    }
+    for (label i = 0; i < atom.nlocal; ++i) clear(i);
     forAll(ids, k)
     {
         const label i = ownedAtom(ids[k]);
-        if (i < 0) continue;
-        f[i][0] = forces[k].x();
-        f[i][1] = forces[k].y();
-        f[i][2] = forces[k].z();
+        if (i >= 0) set(i, k);
     }
+}
+
+
+void Foam::liggghtsCoupling::setForces
+(
+    const labelList& ids,
+    const vectorField& forces
+)
+{
+    double** f = forceArray();
+    setOwned
+    (
+        ids,
+        [&](const label i, const label k)
+        {
+            f[i][0] = forces[k].x();
+            f[i][1] = forces[k].y();
+            f[i][2] = forces[k].z();
+        },
+        [&](const label i) { f[i][0] = f[i][1] = f[i][2] = 0; }
+    );
+}
+
+
+double* Foam::liggghtsCoupling::heatArray(const word& name) const
+{
+    LAMMPS_NS::Fix* fix = lmp_->modify->find_fix_property
+    (
+        name.c_str(), "property/atom", "scalar", 0, 0, "pimpleDEMFoam", false
+    );
+    if (!fix)
+    {
+        FatalErrorInFunction
+            << "heatTransfer: the DEM script " << demDir_ << " has no per-particle "
+            << name << ": it needs 'fix couple/cfd/convection T0 <initial K>',"
+            << " which gives the particles a temperature and the gas's heat"
+            << exit(FatalError);
+    }
+    return static_cast<LAMMPS_NS::FixPropertyAtom*>(fix)->vector_atom;
+}
+
+
+Foam::scalarList Foam::liggghtsCoupling::thermalCapacities() const
+{
+    const label nTypes = lmp_->atom->ntypes;
+    LAMMPS_NS::Fix* fix = lmp_->modify->find_fix_property
+    (
+        "thermalCapacity", "property/global", "peratomtype", nTypes, 0,
+        "pimpleDEMFoam", false
+    );
+    if (!fix)
+    {
+        FatalErrorInFunction
+            << "heatTransfer: the DEM script " << demDir_ << " has no"
+            << " 'fix ... property/global thermalCapacity peratomtype c1 c2 ...'"
+            << exit(FatalError);
+    }
+    scalarList cp(nTypes);
+    forAll(cp, t)
+    {
+        cp[t] = static_cast<LAMMPS_NS::FixPropertyGlobal*>(fix)->compute_vector(t);
+        if (!(cp[t] > 0))
+        {
+            FatalErrorInFunction
+                << "heatTransfer: the DEM script's thermalCapacity of atom type "
+                << t + 1 << " is " << cp[t] << ": it must be positive"
+                << exit(FatalError);
+        }
+    }
+    return cp;
+}
+
+
+void Foam::liggghtsCoupling::enableHeat()
+{
+    heat_ = true;
+    // every piece the exchange needs, or an error naming it, now
+    heatArray("Temp");
+    heatArray("convectiveHeatFlux");
+    thermalCapacities();
+}
+
+
+void Foam::liggghtsCoupling::setHeatFluxes
+(
+    const labelList& ids,
+    const scalarField& Q
+)
+{
+    double* q = heatArray("convectiveHeatFlux");
+    setOwned
+    (
+        ids,
+        [&](const label i, const label k) { q[i] = Q[k]; },
+        [&](const label i) { q[i] = 0; }
+    );
 }
 
 

@@ -179,10 +179,24 @@ Foam::particleFluidCoupling::particleFluidCoupling
     // bad names fail before the DEM starts
     readForces();
     voidFraction_ = voidFractionModel::New(dict_, mesh);
+    if (dict_.found("heatTransfer"))
+    {
+        heat_.reset(new particleHeatTransfer(mesh, dict_, rho_));
+    }
     distributor_.reset(new particleDistributor(voidFraction_()));
     dem_.reset(new liggghtsCoupling(mesh.time(), dict_));
     if (forces_->needsAccelerations()) dem_->trackAccelerations();
     checkDimensions();
+    if (heat_.valid())
+    {
+        if (voidFraction_->twoDimensional())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "heatTransfer is not available in 2D (twoDimensional)"
+                << exit(FatalIOError);
+        }
+        dem_->enableHeat();
+    }
     schedule_.reset(new couplingSchedule(mesh.time(), dict_, dem_->timeStep()));
 
     // the initial state: the field the first interval starts from
@@ -200,6 +214,7 @@ void Foam::particleFluidCoupling::addKeywords(keywordSchema& schema)
     couplingSchedule::addKeywords(schema);
     schema.add("formulation", keywordSchema::oneWord);
     particleForceList::addKeywords(schema);
+    particleHeatTransfer::addKeywords(schema);
     schema.add("particlesOutside", keywordSchema::oneWord);
     schema.add("reportExchange", keywordSchema::onOff);
     schema.add("particleOutput", keywordSchema::oneWord);
@@ -376,6 +391,11 @@ void Foam::particleFluidCoupling::beginStep
         diagnostics_.charge(couplingDiagnostics::dem);
         mapParticles();
         setMomentumExchange(U);
+        if (heat_.valid())
+        {
+            heat_->beginInterval(forceState(U));
+            diagnostics_.charge(couplingDiagnostics::forces);
+        }
     }
 
     const scalar f = schedule_->beginFluidStep();
@@ -493,6 +513,7 @@ void Foam::particleFluidCoupling::endStep
     vector dragSum(Zero), meanSum(Zero);
     addFluidForces(U, p, last, dragSum, meanSum);
     checkMomentumBalance(U, last, dragSum, meanSum);
+    if (heat_.valid()) heat_->endStep(forceState(U), last, schedule_->fluidSteps());
     if (mesh_.time().writeTime())
     {
         Ksl_.correctBoundaryConditions();
@@ -513,15 +534,17 @@ void Foam::particleFluidCoupling::pushForces()
     vectorField& F = forceMean_;
     if (demForceScale_ != 1) F *= demForceScale_;
     const particleHolders& holders = voidFraction_->holders();
-    if (holders.distributed())
+    // the holders agree on each value: one copy goes to its owner
+    const labelList& ids = holders.distributed() ? ownedIds_ : particles_.ids();
+    holders.toOwners(F);
+    dem_->setForces(ids, F);
+    if (heat_.valid())
     {
-        // the holders agree on each force: one copy goes to its owner
-        holders.toOwners(F);
-        dem_->setForces(ownedIds_, F);
-    }
-    else
-    {
-        dem_->setForces(particles_.ids(), F);
+        Info<< "heat exchange " << schedule_->nCouplings() << ": to the particles "
+            << heat_->totalHeat() << " W, balance " << heat_->takeWorstBalance() << endl;
+        scalarField& Q = heat_->heatMean();
+        holders.toOwners(Q);
+        dem_->setHeatFluxes(ids, Q);
     }
     diagnostics_.charge(couplingDiagnostics::exchange);
 

@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 #include "voidFractionModel.H"
 #include "modelCoefficients.H"
+#include "selectedConstructor.H"
 
 Foam::autoPtr<Foam::voidFractionModel> Foam::voidFractionModel::New
 (
@@ -13,25 +14,12 @@ Foam::autoPtr<Foam::voidFractionModel> Foam::voidFractionModel::New
     const fvMesh& mesh
 )
 {
-    keywordSchema::checkKind(dict, "voidFractionModel", keywordSchema::oneWord);
-    const word modelType(dict.get<word>("voidFractionModel"));
-
-    Info<< "Selecting voidFractionModel " << modelType << endl;
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "voidFractionModel",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<voidFractionModel>(cstrIter()(modelType, dict, mesh));
+    word modelType;
+    const auto cstr = selectedConstructor<voidFractionModel>
+    (
+        dict, "voidFractionModel", "voidFractionModel", modelType
+    );
+    return autoPtr<voidFractionModel>(cstr(modelType, dict, mesh));
 }
 
 

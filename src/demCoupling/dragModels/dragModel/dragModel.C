@@ -5,6 +5,7 @@
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
 #include "dragModel.H"
+#include "selectedConstructor.H"
 
 namespace Foam
 {
@@ -19,24 +20,9 @@ Foam::autoPtr<Foam::dragModel> Foam::dragModel::New
     const word& keyword
 )
 {
-    keywordSchema::checkKind(dict, keyword, keywordSchema::oneWord);
-    const word modelType(dict.get<word>(keyword));
-
-    Info<< "Selecting dragModel " << modelType << endl;
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "dragModel",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<dragModel>(cstrIter()(dict));
+    word modelType;
+    return autoPtr<dragModel>
+    (
+        selectedConstructor<dragModel>(dict, keyword, "dragModel", modelType)(dict)
+    );
 }
-

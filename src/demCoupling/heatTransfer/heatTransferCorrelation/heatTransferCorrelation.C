@@ -5,7 +5,7 @@
     SPDX-License-Identifier: GPL-3.0-or-later
 \*---------------------------------------------------------------------------*/
 #include "heatTransferCorrelation.H"
-#include "keywordSchema.H"
+#include "selectedConstructor.H"
 
 namespace Foam
 {
@@ -20,19 +20,12 @@ Foam::autoPtr<Foam::heatTransferCorrelation> Foam::heatTransferCorrelation::New
     const word& keyword
 )
 {
-    keywordSchema::checkKind(dict, keyword, keywordSchema::oneWord);
-    const word modelType(dict.get<word>(keyword));
-    Info<< "Selecting heatTransferCorrelation " << modelType << endl;
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
+    word modelType;
+    return autoPtr<heatTransferCorrelation>
+    (
+        selectedConstructor<heatTransferCorrelation>
         (
-            dict,
-            "heatTransferCorrelation",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-    return autoPtr<heatTransferCorrelation>(cstrIter()(dict));
+            dict, keyword, "heatTransferCorrelation", modelType
+        )(dict)
+    );
 }

@@ -234,17 +234,20 @@ def nusselt(correlation, re, pr, alpha):
             + (1.33 - 2.4*alpha + 1.2*alpha**2)*re**0.7*pr**(1/3))
 
 
-def sphere_heating(correlation, t):
+def sphere_heating(correlation, t, h=1, size=d):
     """the 1 mm glass sphere (300 K, c_p 840) held in the Couette flow of
-    water at 350 K (tests/cases/sphereHeating): the lumped solution
+    water at 350 K (tests/cases/sphereHeating), a sphere of another size, or
+    a parcel of h^3 of them:
+    the lumped solution
     T = Tg + (T0 - Tg) exp(-t hA/(m c_p)) with h from the correlation at
     the fluid velocity and void fraction of the cell that holds it"""
     nu_w, rho_w, cp_w, kappa_w = 1e-6, 1000.0, 4180.0, 0.6
-    volume = math.pi/6*d**3
-    alpha = 1 - volume/0.008**3
-    re = alpha*(0.05*0.044/0.096)*d/nu_w
+    volume = math.pi/6*size**3
+    # a parcel of h^3 such spheres: their conductance and heat capacity, its volume
+    alpha = 1 - h**3*volume/0.008**3
+    re = alpha*(0.05*0.044/0.096)*size/nu_w
     pr = nu_w*rho_w*cp_w/kappa_w
-    ha = nusselt(correlation, re, pr, alpha)*kappa_w/d*math.pi*d**2
+    ha = nusselt(correlation, re, pr, alpha)*kappa_w/size*math.pi*size**2
     tau = rho_p*volume*840.0/ha
     return 350.0 - 50.0*np.exp(-np.maximum(t, 0)/tau)
 
@@ -299,6 +302,25 @@ def test_heat_transfer():
         energy = abs(gas + sphere + pending)/sphere
         check("%s: energy of water and sphere conserved over the run" % correlation, energy < 1e-6,
               "(%.1e of the heat exchanged)" % energy)
+
+    # a parcel of 8 spheres (h = 2, cubic) heats as each of its spheres
+    case = os.path.join(WORK, "sphere-heating-parcel")
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(os.path.join(ROOT, "tests", "cases", "sphereHeating"), case)
+    edit(os.path.join(case, "DEM", "in.liggghts"), r"diameter 0.001 ", "diameter 0.002 ")
+    edit(os.path.join(case, "constant", "couplingProperties"), r"^particlesOutside",
+         "coarseGraining { factor 2; forceScaling cubic; }\nparticlesOutside")
+    rc, out = sh("blockMesh > log.blockMesh && pimpleDEMFoam > log.pimpleDEMFoam 2>&1", case, check=False)
+    check("a parcel, h = 2: run completed", rc == 0, out[-800:] if rc else "")
+    if rc == 0:
+        data = np.loadtxt(os.path.join(case, "DEM", "post", "temperature.txt"))
+        t, temperature = data[:, 0], data[:, 1]
+        right = np.max(np.abs(temperature - sphere_heating("RanzMarshall", t - interval, h=2)))/50
+        wrong = np.max(np.abs(temperature - sphere_heating("RanzMarshall", t - interval, size=2*d)))/50
+        check("a 2 mm parcel of 1 mm spheres: the lumped solution of its spheres within 1 %", right < 0.01,
+              "(%.3f %% of the difference)" % (100*right))
+        check("the lumped solution of one 2 mm sphere is more than 3 % away (the check discriminates)",
+              wrong > 0.03, "(%.2f %%)" % (100*wrong))
 
     # serial = 2 ranks (the mesh split in x), the linear solvers converged to
     # round-off so that only the decomposition differs

@@ -11,11 +11,14 @@
   cylinder  cylinderBed, 1 s serial (`analytical`), as it is, with the inlet
             at 0.8 m/s and with slip walls for the gas (about 6 minutes
             each): cylinder.csv, cylinder.md (docs/solver.md)
+  heated    heatedBed, 2 s serial (about 14 minutes): heatedBed.csv,
+            heatedBed.png, heatedBed.md (docs/solver.md)
 
 Each runs in a copy of its tutorial under build/tutorialRuns/ and writes to
 benchmarks/tutorialRuns/results/.
 
-usage: benchmarks/tutorialRuns.py [stress] [riser] [cylinder]   (default all)
+usage: benchmarks/tutorialRuns.py [stress] [riser] [cylinder] [heated]   (default all)
+       benchmarks/tutorialRuns.py --heated-table CSV   heatedBed.md from a run's CSV
 """
 import os
 import re
@@ -126,8 +129,36 @@ def cylinder():
     open(os.path.join(RESULTS, "cylinder.md"), "w").write("\n".join(lines) + "\n")
 
 
+def heated_table(csv):
+    """the beads' mean temperature rise against the lumped balance's, at
+    every half second of heatedBed.csv"""
+    data = np.genfromtxt(csv, delimiter=",", names=True)
+    t, beads, lumped = data["time_s"], data["beads_mean_K"], data["lumped_K"]
+    rows = ["| t [s] | beads' mean temperature rise (DEM) | lumped balance of the bed | difference |",
+            "|---|---|---|---|"]
+    for at in np.arange(0.5, t[-1] + 1e-9, 0.5):
+        i = int(np.argmin(np.abs(t - at)))
+        rise, model = beads[i] - beads[0], lumped[i] - lumped[0]
+        rows.append("| %.1f | %.3f K | %.3f K | %+.1f %% |" % (t[i], rise, model, 100*(rise/model - 1)))
+    open(os.path.join(RESULTS, "heatedBed.md"), "w").write("\n".join(rows) + "\n")
+
+
+def heated():
+    case = copy("heatedBed", "heatedBed")
+    run(case, ["2.0", "1"])
+    for name in ("heatedBed.csv", "heatedBed.png"):
+        shutil.copy(os.path.join(case, name), RESULTS)
+    heated_table(os.path.join(RESULTS, "heatedBed.csv"))
+
+
 def main():
-    parts = {"stress": stress, "riser": riser, "cylinder": cylinder}
+    if sys.argv[1:2] == ["--heated-table"]:
+        kept = os.path.join(RESULTS, "heatedBed.csv")
+        if os.path.abspath(sys.argv[2]) != kept:
+            shutil.copy(sys.argv[2], kept)
+        heated_table(kept)
+        return
+    parts = {"stress": stress, "riser": riser, "cylinder": cylinder, "heated": heated}
     chosen = sys.argv[1:] or list(parts)
     unknown = [p for p in chosen if p not in parts]
     if unknown:

@@ -6,6 +6,7 @@ Saffman-Mei lift, the added-mass ODE, Richardson-Zaki, Ergun, bed weight,
 Wen-Yu), exact momentum exchange, restart, serial against 2 ranks, and bad
 input stopping with a clear error and no hang."""
 import csv
+import glob
 import json
 import math
 import os
@@ -361,6 +362,37 @@ def test_heat_transfer():
         rc, out = sh("blockMesh > log.blockMesh && timeout 120 pimpleDEMFoam", case, check=False)
         check("%s: error says '%s'" % (name, needle), rc not in (0, 124) and needle in out,
               "" if needle in out else out[-600:])
+
+
+def test_heated_bed():
+    print("heatedBed tutorial, 0.05 s: heat the beads receive, as LIGGGHTS integrates it")
+    case = copy_tutorial("heatedBed", "heatedBed")
+    rc, out = sh("./Allrun 0.05", case, check=False)
+    check("Allrun completed", rc == 0, out[-1500:] if rc else "")
+    if rc:
+        return
+    log = open(os.path.join(case, "log.pimpleDEMFoam")).read()
+    exchange = [(float(q), float(b)) for q, b in
+                re.findall(r"^heat exchange \d+: to the particles (\S+) W, balance (\S+)$", log, re.M)]
+    check("heat the beads receive = heat the gas loses, every fluid step (%d couplings)" % len(exchange),
+          len(exchange) == 500 and max(b for _, b in exchange) < 1e-12,
+          "(worst %.1e)" % max(b for _, b in exchange) if exchange else "")
+    bed = np.loadtxt(os.path.join(case, "DEM", "post", "bedTemperature.txt"))
+    p = {k: float(v) for k, v in re.findall(r"(?m)^variable\s+(\w+)\s+equal\s+(\S+)",
+                                           open(os.path.join(case, "DEM", "in.parameters")).read())}
+    capacity = p["count"]*p["density"]*4/3*math.pi*p["radius"]**3*p["heatCapacity"]
+    # each interval's heat acts through the next: by the last print, all but the last interval's
+    handed = sum(q for q, _ in exchange[:-1])*1e-4
+    held = capacity*(bed[-1, 1] - bed[0, 1])
+    check("the beads hold the heat they were handed (%.4g J), as LIGGGHTS integrates it" % handed,
+          abs(held/handed - 1) < 1e-5, "(%.1e apart)" % abs(held/handed - 1))
+    outlet = np.vstack([np.loadtxt(f, comments="#", ndmin=2) for f in
+                        glob.glob(os.path.join(case, "postProcessing", "outletTemperature", "*",
+                                               "surfaceFieldValue.dat"))])
+    check("the gas leaving and the beads between the start's 300 K and the inlet's 400 K",
+          outlet[:, 1].min() >= 300 - 1e-6 and outlet[:, 1].max() <= 400 and
+          bed[:, 1].min() >= 300 - 1e-9 and bed[:, 1].max() <= 400,
+          "(gas %.3f..%.3f K)" % (outlet[:, 1].min(), outlet[:, 1].max()))
 
 
 def test_lift_virtual_mass():
@@ -1346,7 +1378,7 @@ def test_coupling_scale():
 
 
 def main():
-    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_lift_virtual_mass, test_heat_transfer, test_restart, test_bed_restart, test_serial_parallel,
+    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_lift_virtual_mass, test_heat_transfer, test_heated_bed, test_restart, test_bed_restart, test_serial_parallel,
                 test_forces_dictionary, test_bad_input, test_parcels, test_parcels_2d, test_packed_bed,
                 test_fluidised_bed, test_riser, test_spouted_bed, test_cylinder_bed, test_mueller_bed], sys.argv[1:])
     return checks.summary("coupling")

@@ -292,10 +292,46 @@ def test_spouted_bed_closures():
                       abs(peak - float(r["peak_h" + tag])) < 1e-3 and abs(mad - float(r["mad_h" + tag])) < 1e-4)
 
 
+def heated_bed_lumped(t):
+    """the heatedBed tutorial's lumped balance in closed form: 10,000 glass
+    beads of 1 mm (2500 kg/m3, c_p 840) at 300 K, air (1.2 kg/m3, Cp 1007)
+    at 400 K through 48 x 6 mm, its velocity ramped linearly to 1 m/s over
+    0.05 s: T = Tin - (Tin - T0) exp(-rho A Cp int(U dt)/(M c_p))"""
+    capacity = 10000*2500*4/3*np.pi*0.0005**3*840
+    flow = 1.2*0.048*0.006*1007
+    passed = np.where(t < 0.05, t**2/(2*0.05), 0.025 + (t - 0.05))
+    return 400 - 100*np.exp(-flow*passed/capacity)
+
+
+def test_heated_bed_table():
+    print("the heated bed's table: the lumped balance in closed form, the rises from the kept run")
+    results = os.path.join(ROOT, "benchmarks", "tutorialRuns", "results")
+    data = np.genfromtxt(os.path.join(results, "heatedBed.csv"), delimiter=",", names=True)
+    t, beads, lumped = data["time_s"], data["beads_mean_K"], data["lumped_K"]
+    worst = np.max(np.abs(lumped - heated_bed_lumped(t)))
+    check("heatedBed.csv's lumped balance = the closed form (%d rows)" % len(t), len(t) > 100 and worst < 2e-5,
+          "(%.1e K apart)" % worst)
+    rows = {}
+    for line in open(os.path.join(results, "heatedBed.md")):
+        m = re.match(r"\| ([\d.]+) \| ([\d.]+) K \| ([\d.]+) K \| ([-+][\d.]+) % \|", line)
+        if m:
+            rows[float(m.group(1))] = [float(x) for x in m.groups()[1:]]
+    wrong = []
+    for at, (rise, model, diff) in rows.items():
+        i = int(np.argmin(np.abs(t - at)))
+        want_rise, want_model = beads[i] - beads[0], heated_bed_lumped(t[i]) - heated_bed_lumped(t[0])
+        want_diff = 100*(want_rise/want_model - 1)
+        if abs(rise - want_rise) > 6e-4 or abs(model - want_model) > 6e-4 or abs(diff - want_diff) > 0.06:
+            wrong.append(at)
+    check("heatedBed.md's %d rows recomputed from the CSV's beads and the closed form" % len(rows),
+          len(rows) == 4 and not wrong, "(rows at %s differ)" % wrong)
+
+
 def main():
     checks.run([test_links, test_readme_numbers_in_linked_sections, test_result_tables, test_coarse_bed_tables_from_runs,
                 test_study_tables_from_csv, test_compression_tables_from_csv,
-                test_spouted_bed_summary_from_results, test_spouted_bed_against_fine, test_spouted_bed_closures],
+                test_spouted_bed_summary_from_results, test_spouted_bed_against_fine, test_spouted_bed_closures,
+                test_heated_bed_table],
                sys.argv[1:])
     return checks.summary("docs")
 

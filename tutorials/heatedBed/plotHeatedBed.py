@@ -89,8 +89,9 @@ def main():
     a.legend()
     times = sorted((d for d in os.listdir(case) if re.fullmatch(r"[0-9.]+", d) and float(d) > 0), key=float)
     if times:
-        field = open(os.path.join(case, times[-1], "T")).read()
-        m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s+(\d+)\s*\(([^)]*)\)", field)
+        # an ascii field (the case's writeFormat); a binary one is not drawn
+        field = open(os.path.join(case, times[-1], "T"), errors="replace").read()
+        m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s+(\d+)\s*\(([-+0-9.eE\s]*)\)", field)
         if m:
             values = np.array(m.group(2).split(), float)
             nx, ny = 16, 2

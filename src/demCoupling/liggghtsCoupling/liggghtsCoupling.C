@@ -260,6 +260,10 @@ void Foam::liggghtsCoupling::writeRestart(const fileName& dir)
             previousSet[me][i] = previous[i][3];
         }
     }
+    // the heat the particles were handed for the next interval, in
+    // DEM.heat, written before DEM.forces whose presence says all is there
+    if (heat_) writeHeat(dir);
+
     // a restart sets LIGGGHTS up (neighbour lists, contact histories)
     // before its first step, which a run going on does not: the next run
     // from here is set up alike, so that the two continue identically
@@ -287,6 +291,30 @@ void Foam::liggghtsCoupling::writeRestart(const fileName& dir)
         }
     }
     mv(tmpPath, dir/"DEM.forces");
+}
+
+
+void Foam::liggghtsCoupling::writeHeat(const fileName& dir) const
+{
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    const double* q = heatArray("convectiveHeatFlux");
+    const label me = Pstream::myProcNo();
+    List<labelList> ids(Pstream::nProcs());
+    List<scalarField> heat(Pstream::nProcs());
+    ids[me].setSize(atom.nlocal);
+    heat[me].setSize(atom.nlocal);
+    for (label i = 0; i < atom.nlocal; ++i)
+    {
+        ids[me][i] = label(atom.tag[i]);
+        heat[me][i] = q[i];
+    }
+    Pstream::gatherList(ids);
+    Pstream::gatherList(heat);
+    if (!Pstream::master()) return;
+    OFstream os(dir/"DEM.heat", IOstream::BINARY);
+    os.precision(17);
+    os  << ListListOps::combine<labelList>(ids, accessOp<labelList>()) << nl
+        << ListListOps::combine<scalarField>(heat, accessOp<scalarField>()) << nl;
 }
 
 
@@ -675,6 +703,37 @@ void Foam::liggghtsCoupling::enableHeat()
     heatArray("Temp");
     heatArray("convectiveHeatFlux");
     thermalCapacities();
+    if (restart_.empty()) return;
+
+    // a continued run: the heat each particle had been handed for the
+    // interval after the written time (LIGGGHTS's restart file lacks it)
+    const fileName path(restart_.path()/"DEM.heat");
+    labelList ids;
+    scalarField heat;
+    if (isFile(path))
+    {
+        IFstream is(path, IOstream::BINARY);
+        const bool throwing = FatalIOError.throwExceptions();
+        try
+        {
+            is >> ids >> heat;
+        }
+        catch (const Foam::IOerror&)
+        {
+            ids.clear();
+        }
+        FatalIOError.throwExceptions(throwing);
+    }
+    if (ids.size() != nParticles() || heat.size() != ids.size())
+    {
+        FatalErrorInFunction
+            << path << " holds " << ids.size() << " ids and " << heat.size()
+            << " heat fluxes for the " << nParticles() << " particles of " << restart_
+            << ": a run with heatTransfer continues only from a time it wrote"
+            << " (remove " << restart_.path() << " to continue from the time before)"
+            << exit(FatalError);
+    }
+    setHeatFluxes(ids, heat);
 }
 
 

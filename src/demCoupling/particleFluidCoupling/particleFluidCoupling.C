@@ -345,8 +345,9 @@ Foam::particleForce::state Foam::particleFluidCoupling::forceState
 {
     return
     {
-        U, rho_, nu_, g_, schedule_->interval(), particles_,
-        voidFraction_->particleVolumes(), weightSum_, parcels_, voidFraction_(), dem_()
+        U, rho_, nu_, g_, schedule_->interval(), particles_, particles_.velocities(),
+        particles_.types(), voidFraction_->particleVolumes(), weightSum_, parcels_,
+        voidFraction_(), dem_()
     };
 }
 
@@ -435,9 +436,8 @@ void Foam::particleFluidCoupling::addFluidForces
     // others; the sums over the particles (each once) in the same pass:
     // this step's exchanged force, and at the end of the interval the mean
     const particleForce::state s(forceState(U));
-    forces_->prepareStep(s, p);
     vectorField Up;
-    voidFraction_->gather(U.primitiveField(), Up);
+    forces_->prepareStep(s, p, Up);
     const scalar perStep = 1/scalar(schedule_->fluidSteps());
     const particleHolders& holders = voidFraction_->holders();
     vectorField& F = forceSum_;

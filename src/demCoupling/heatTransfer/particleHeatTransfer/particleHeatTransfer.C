@@ -110,7 +110,7 @@ Foam::dimensionedScalar Foam::particleHeatTransfer::diffusivity() const
 void Foam::particleHeatTransfer::beginInterval(const particleForce::state& s)
 {
     const particleData& particles = s.particles;
-    const vectorField& v = particles.velocities();
+    const vectorField& v = s.velocities;
     const scalarField& Tp = particles.field<scalar>("temperature");
     const scalarField& mcp = particles.field<scalar>("heatCapacity");
     const scalar Pr = s.nu*rho_*Cp_/kappa_;
@@ -133,7 +133,7 @@ void Foam::particleHeatTransfer::beginInterval(const particleForce::state& s)
             }
             else
             {
-                const label type = particles.type(i);
+                const label type = s.type(i);
                 const scalar d = s.parcels.particleDiameter(2*particles.radii()[i], type);
                 const scalar alpha = alphaP/w;
                 const scalar Re = alpha*mag(Up/w - v[i])*d/s.nu;

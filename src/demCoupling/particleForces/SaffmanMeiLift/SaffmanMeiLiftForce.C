@@ -41,13 +41,13 @@ void Foam::SaffmanMeiLiftForce::beginInterval
     const vectorField vorticity(fvc::curl(s.U)().primitiveField());
     vectorField Up, vorticityP;
     s.voidFraction.gather(s.U.primitiveField(), Up, vorticity, vorticityP);
-    const vectorField& v = s.particles.velocities();
+    const vectorField& v = s.velocities;
     vectorField& F = e.addedForce(s.particles.size());
     forAll(Up, i)
     {
         const scalar w = s.weightSum[i];
         if (w <= SMALL) continue;
-        const label type = s.particles.type(i);
+        const label type = s.type(i);
         const scalar d = s.parcels.particleDiameter(2*s.particles.radii()[i], type);
         F[i] +=
             s.parcels.dragFactor(type)

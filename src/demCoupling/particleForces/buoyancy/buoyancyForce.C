@@ -33,6 +33,6 @@ Foam::buoyancyForce::buoyancyForce
 void Foam::buoyancyForce::add(const state& s, const label i, vector& f) const
 {
     const scalar volume =
-        s.parcels.volumeForceFactor(s.particles.type(i))*s.volumes[i];
+        s.parcels.volumeForceFactor(s.type(i))*s.volumes[i];
     f -= s.rho*volume*s.g;
 }

@@ -37,7 +37,7 @@ Foam::dragForce::dragForce
 void Foam::dragForce::beginInterval(const state& s, intervalExchange& e)
 {
     const particleData& particles = s.particles;
-    const vectorField& v = particles.velocities();
+    const vectorField& v = s.velocities;
     const scalar mu = s.rho*s.nu;
     scalarField& beta = e.beta;
     beta.setSize(particles.size());
@@ -57,7 +57,7 @@ void Foam::dragForce::beginInterval(const state& s, intervalExchange& e)
             else
             {
                 const scalar a = alphaP/w;
-                const label type = particles.type(i);
+                const label type = s.type(i);
                 // a parcel: the law for one of its particles, scaled
                 beta[i] = s.parcels.dragFactor(type)*law_->beta
                 (

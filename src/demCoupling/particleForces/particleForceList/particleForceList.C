@@ -194,8 +194,28 @@ void Foam::particleForceList::beginInterval
 void Foam::particleForceList::prepareStep
 (
     const particleForce::state& s,
-    const volScalarField& p
+    const volScalarField& p,
+    vectorField& Up
 )
 {
-    for (particleForce& f : forces_) f.prepareStep(s, p);
+    const vectorField& U = s.U.primitiveField();
+    bool joined = false;
+    for (particleForce& f : forces_)
+    {
+        tmp<vectorField> field(f.stepField(p));
+        if (!field.valid()) continue;
+        vectorField perParticle;
+        if (joined)
+        {
+            s.voidFraction.gather(field(), perParticle);
+        }
+        else
+        {
+            // the first such field shares the velocity's pass
+            s.voidFraction.gather(U, Up, field(), perParticle);
+            joined = true;
+        }
+        f.setGathered(std::move(perParticle));
+    }
+    if (!joined) s.voidFraction.gather(U, Up);
 }

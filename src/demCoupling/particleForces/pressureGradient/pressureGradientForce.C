@@ -37,13 +37,12 @@ Foam::pressureGradientForce::pressureGradientForce
 }
 
 
-void Foam::pressureGradientForce::prepareStep
+Foam::tmp<Foam::vectorField> Foam::pressureGradientForce::stepField
 (
-    const state& s,
     const volScalarField& p
-)
+) const
 {
-    s.voidFraction.gather(fvc::grad(p)().primitiveField(), gradP_);
+    return tmp<vectorField>::New(fvc::grad(p)().primitiveField());
 }
 
 
@@ -58,7 +57,7 @@ void Foam::pressureGradientForce::add
     if (w > SMALL)
     {
         const scalar volume =
-            s.parcels.volumeForceFactor(s.particles.type(i))*s.volumes[i];
+            s.parcels.volumeForceFactor(s.type(i))*s.volumes[i];
         f -= s.rho*volume*gradP_[i]/w;
     }
 }

@@ -94,7 +94,7 @@ void Foam::virtualMassForce::beginInterval
     {
         const scalar w = s.weightSum[i];
         if (w <= SMALL) continue;
-        const label type = s.particles.type(i);
+        const label type = s.type(i);
         // on the parcel's volume, like the pressure gradient force
         F[i] +=
             s.parcels.volumeForceFactor(type)

@@ -246,7 +246,10 @@ void Foam::caseScaler::scaleCoupling() const
     const fileName file(dir_/"constant"/"couplingProperties");
     if (!isFile(file)) return;
     dictionary dict(read(file));
-    requireKnown(dict, wordList(), {"couplingInterval", "alphaMin"}, file);
+    requireKnown
+    (
+        dict, wordList(), {"couplingInterval", "alphaMin", "virtualMassCoefficient"}, file
+    );
     for (entry& e : dict)
     {
         if (!e.isDict() || e.keyword() == "FoamFile") continue;
@@ -254,6 +257,17 @@ void Foam::caseScaler::scaleCoupling() const
         if (e.keyword() == "coarseGraining")
         {
             requireKnown(e.dict(), wordList(), {"factor"}, where);
+            continue;
+        }
+        if (e.keyword() == "forces" || e.keyword() == "heatTransfer")
+        {
+            // the forces' and the correlations' numbers are dimensionless
+            // (the added mass's Cvm); a dimensional one is an error
+            for (const entry& sub : e.dict())
+            {
+                if (sub.isDict()) requireKnown(sub.dict(), wordList(), {"Cvm"}, where/sub.keyword());
+            }
+            requireKnown(e.dict(), wordList(), wordList(), where);
             continue;
         }
         scaleCoefficients(e.dict(), coefficientsModel(e.keyword(), where), where);

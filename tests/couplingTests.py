@@ -21,6 +21,7 @@ from scipy.optimize import brentq
 import checks
 from checks import WORK, check, near
 from foamCase import ROOT, set_dem, sh
+import schumann
 import snappyColumn
 
 TUTORIALS = os.path.join(ROOT, "tutorials")
@@ -291,10 +292,16 @@ def test_heat_transfer():
         check("%s: the lumped solution with %s's Nusselt number is more than 3 %% away (the check "
               "discriminates)" % (correlation, other), wrong > 0.03, "(%.2f %%)" % (100*wrong))
         log = open(os.path.join(case, "log.pimpleDEMFoam")).read()
-        balances = [float(x) for x in re.findall(r"^heat exchange \d+: .* balance (\S+)$", log, re.M)]
+        balances = [float(x) for x in re.findall(r"^heat exchange \d+: .* W, balance (\S+);", log, re.M)]
         check("%s: heat the sphere receives = heat the water loses, every fluid step (%d couplings)"
               % (correlation, len(balances)), len(balances) == 300 and max(balances) < 1e-12,
               "(worst %.1e)" % max(balances) if balances else "")
+        budget, continuity = gas_energy(log)
+        check("%s: the water's energy: change = heat from the sphere + the continuity error's heat, every "
+              "step, to round-off; that heat within the pressure solver's tolerance (1e-10)" % correlation,
+              budget < 1e-12 and continuity < 1e-8,
+              "(worst %.1e of what is differenced; continuity errors' heat %.1e of the heat that flows)"
+              % (budget, continuity))
         # energy: the water's change, the sphere's, and the last interval's heat the DEM has yet to take
         gas = 1000*4180*0.008**3*np.sum(read_internal(os.path.join(case, "0.15", "alpha"), 300)
                                          * (read_internal(os.path.join(case, "0.15", "T"), 300) - 350))
@@ -364,6 +371,80 @@ def test_heat_transfer():
               "" if needle in out else out[-600:])
 
 
+def gas_energy(log):
+    """(worst budget residual, worst continuity errors' heat) of the gas's
+    energy over the logged couplings, each relative to the gross flows"""
+    rows = [(float(a), float(b)) for a, b in
+            re.findall(r"^heat exchange \d+: .*; gas energy balance (\S+), continuity errors' heat (\S+)$", log, re.M)]
+    return (max(a for a, _ in rows), max(b for _, b in rows)) if rows else (float("inf"), float("inf"))
+
+
+def thermal_front(case, cells, correlation="Gunn"):
+    """the largest differences from Schumann's solution of the fixed bed
+    (tests/cases/packedBedHeating): of the particles' temperature, averaged
+    over each cell's layer, at 1, 1.5 and 2 s, and of the gas at 2 s (by
+    then the first water in has left: its front is a jump no mesh resolves)"""
+    d_p, U, nu_w, rho_w, cp_w, kappa_w = 5e-3, 0.2, 1e-6, 1000.0, 4180.0, 0.6
+    eps = 1 - math.pi/6/1.1**3
+    a = 6*(1 - eps)/d_p
+    h = nusselt(correlation, U*d_p/nu_w, nu_w*rho_w*cp_w/kappa_w, eps)*kappa_w/d_p
+    dz = 0.55/cells
+    solid = 0
+    for step in (2000, 3000, 4000):
+        t = step*5e-4
+        data = np.loadtxt(os.path.join(case, "DEM", "post", "particles.%d.txt" % step), skiprows=9)
+        cell = np.floor(data[:, 1]/dz).astype(int)
+        # the heat of an interval reaches the DEM in the next
+        _, want = schumann.bed(data[:, 1], t - 2.5e-3, U, eps, rho_w, cp_w, rho_p, 840.0, h, a)
+        count = np.bincount(cell)
+        got = np.bincount(cell, (data[:, 2] - 300)/10)/count
+        solid = max(solid, np.max(np.abs(got - np.bincount(cell, want)/count)))
+    want, _ = schumann.bed((np.arange(cells) + 0.5)*dz, 2.0, U, eps, rho_w, cp_w, rho_p, 840.0, h, a)
+    gas = np.max(np.abs((read_internal(os.path.join(case, "2", "T"), cells) - 300)/10 - want))
+    return solid, gas
+
+
+def test_thermal_front():
+    print("thermal front: a fixed bed heated by water against Schumann's solution, three meshes")
+    xi, eta, f, s = schumann.integrated(4, 8, 401)
+    every = slice(None, None, 40)
+    closed = np.array([[schumann.solid(x, e) for e in eta[every]] for x in xi[every]])
+    near("Schumann's closed form against the trapezoidal integration of its equations (401^2 points)",
+         np.max(np.abs(s[every, every] - closed)), 0, 1e-4)
+    errors = {}
+    for cells in (25, 50, 100):
+        case = os.path.join(WORK, "thermal-front-%d" % cells)
+        shutil.rmtree(case, ignore_errors=True)
+        shutil.copytree(os.path.join(ROOT, "tests", "cases", "packedBedHeating"), case)
+        edit(os.path.join(case, "system", "blockMeshDict"), r"\(1 1 100\)", "(1 1 %d)" % cells)
+        rc, out = sh("blockMesh > log.blockMesh && timeout 300 pimpleDEMFoam > log.pimpleDEMFoam 2>&1", case,
+                     check=False)
+        check("%d cells: run completed" % cells, rc == 0, out[-800:] if rc else "")
+        if rc:
+            return
+        errors[cells] = thermal_front(case, cells)
+        log = open(os.path.join(case, "log.pimpleDEMFoam")).read()
+        balances = [float(x) for x in re.findall(r"^heat exchange \d+: .* W, balance (\S+);", log, re.M)]
+        check("%d cells: heat the particles receive = heat the water loses, every step" % cells,
+              len(balances) == 800 and max(balances) < 1e-12, "(worst %.1e)" % max(balances) if balances else "")
+        budget, continuity = gas_energy(log)
+        check("%d cells: the water's energy: change = inflow - outflow - heat to the particles, every "
+              "step, to round-off (no continuity error's heat either)" % cells,
+              budget < 1e-12 and continuity < 1e-12, "(worst %.1e of what is differenced; continuity errors' "
+              "heat %.1e of the heat that flows)" % (budget, continuity))
+    solid, gas = errors[100]
+    check("100 cells of 1.1 d: the particles' temperature per cell within 0.03 of Schumann's "
+          "(of the inlet's rise), 1 to 2 s", solid < 0.03, "(largest %.4f)" % solid)
+    check("100 cells: the water's temperature within 0.03 of Schumann's at 2 s", gas < 0.03, "(largest %.4f)" % gas)
+    check("the difference shrinks as the cells do (25, 50, 100 cells)",
+          errors[25][0] > errors[50][0] > errors[100][0] and errors[25][1] > errors[50][1] > errors[100][1],
+          "(particles %s; water %s)" % (", ".join("%.4f" % errors[n][0] for n in (25, 50, 100)),
+                                        ", ".join("%.4f" % errors[n][1] for n in (25, 50, 100))))
+    other, _ = thermal_front(os.path.join(WORK, "thermal-front-100"), 100, "RanzMarshall")
+    check("Schumann's solution with Ranz and Marshall's Nusselt number is more than 0.1 away (the check "
+          "discriminates)", other > 0.1, "(%.3f)" % other)
+
+
 def test_heated_bed():
     print("heatedBed tutorial, 0.02 s: heat the beads receive, as LIGGGHTS integrates it; continued = uninterrupted")
     case = copy_tutorial("heatedBed", "heatedBed")
@@ -376,10 +457,15 @@ def test_heated_bed():
         return
     log = open(os.path.join(case, "log.pimpleDEMFoam")).read()
     exchange = [(float(q), float(b)) for q, b in
-                re.findall(r"^heat exchange \d+: to the particles (\S+) W, balance (\S+)$", log, re.M)]
+                re.findall(r"^heat exchange \d+: to the particles (\S+) W, balance (\S+);", log, re.M)]
     check("heat the beads receive = heat the gas loses, every fluid step (%d couplings)" % len(exchange),
           len(exchange) == 200 and max(b for _, b in exchange) < 1e-12,
           "(worst %.1e)" % max(b for _, b in exchange) if exchange else "")
+    budget, continuity = gas_energy(log)
+    check("the gas's energy: change = inflow - outflow - heat to the beads + the continuity error's heat, "
+          "every step, to round-off", budget < 1e-12, "(worst %.1e of what is differenced)" % budget)
+    check("the continuity error's heat within the pressure solver's tolerance (1e-8)", continuity < 1e-8,
+          "(worst %.1e of the heat that flows)" % continuity)
     bed = np.loadtxt(os.path.join(case, "DEM", "post", "bedTemperature.txt"))
     p = {k: float(v) for k, v in re.findall(r"(?m)^variable\s+(\w+)\s+equal\s+(\S+)",
                                            open(os.path.join(case, "DEM", "in.parameters")).read())}
@@ -1395,7 +1481,7 @@ def test_coupling_scale():
 
 
 def main():
-    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_lift_virtual_mass, test_heat_transfer, test_heated_bed, test_restart, test_bed_restart, test_serial_parallel,
+    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_lift_virtual_mass, test_heat_transfer, test_thermal_front, test_heated_bed, test_restart, test_bed_restart, test_serial_parallel,
                 test_forces_dictionary, test_bad_input, test_parcels, test_parcels_2d, test_packed_bed,
                 test_fluidised_bed, test_riser, test_spouted_bed, test_cylinder_bed, test_mueller_bed], sys.argv[1:])
     return checks.summary("coupling")

@@ -540,8 +540,12 @@ void Foam::particleFluidCoupling::pushForces()
     dem_->setForces(ids, F);
     if (heat_.valid())
     {
+        gasEnergyBalance& energy = heat_->energy();
         Info<< "heat exchange " << schedule_->nCouplings() << ": to the particles "
-            << heat_->totalHeat() << " W, balance " << heat_->takeWorstBalance() << endl;
+            << heat_->totalHeat() << " W, balance " << heat_->takeWorstBalance()
+            << "; gas energy balance " << energy.worstBalance()
+            << ", continuity errors' heat " << energy.worstContinuity() << endl;
+        energy.reset();
         scalarField& Q = heat_->heatMean();
         holders.toOwners(Q);
         dem_->setHeatFluxes(ids, Q);

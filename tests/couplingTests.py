@@ -445,6 +445,46 @@ def test_thermal_front():
           "discriminates)", other > 0.1, "(%.3f)" % other)
 
 
+def test_particle_conduction():
+    print("conduction between particles (LIGGGHTS's heat/gran conducts where they overlap) in the coupled fixed bed")
+    runs = {}
+    for conductivity in ("1e-6", "1e4"):
+        case = os.path.join(WORK, "thermal-front-conductivity-" + conductivity)
+        shutil.rmtree(case, ignore_errors=True)
+        shutil.copytree(os.path.join(ROOT, "tests", "cases", "packedBedHeating"), case)
+        # the lattice closed to 4.99 mm: neighbours overlap by 0.01 mm and conduct, 1e4 W/m/K
+        # making it matter against the water's exchange
+        script = os.path.join(case, "DEM", "in.liggghts")
+        edit(script, r"sc 0.0055 ", "sc 0.00499 ")
+        edit(script, r"block 0 0.0275 0 0.0275 0 0.55 ", "block 0 0.02495 0 0.02495 0 0.499 ")
+        edit(script, r"thermalConductivity peratomtype 1.0", "thermalConductivity peratomtype " + conductivity)
+        edit(script, r"^run ", "compute heat all reduce sum f_Temp\nvariable heat equal c_heat\n"
+             "fix heatSum all print 5 \"${heat}\" file post/heat.txt screen no\nrun ")
+        mesh = os.path.join(case, "system", "blockMeshDict")
+        edit(mesh, r"27\.5", "24.95")
+        edit(mesh, r"550\)", "499)")
+        rc, out = sh("blockMesh > log.blockMesh && timeout 300 pimpleDEMFoam > log.pimpleDEMFoam 2>&1", case,
+                     check=False)
+        label = "particles' conductivity %s W/m/K" % conductivity
+        check("%s: run completed" % label, rc == 0, out[-800:] if rc else "")
+        if rc:
+            return
+        log = open(os.path.join(case, "log.pimpleDEMFoam")).read()
+        handed = [float(q) for q in re.findall(r"^heat exchange \d+: to the particles (\S+) W", log, re.M)]
+        # the sum of the temperatures at each coupling; each interval's heat acts through the next
+        sums = np.loadtxt(os.path.join(case, "DEM", "post", "heat.txt"), comments="#")
+        capacity = rho_p*math.pi/6*0.005**3*840
+        held = capacity*(sums[-1] - sums[0])
+        given = sum(handed[:-1])*2.5e-3
+        check("%s: the particles hold the heat they were handed (%.4g J)" % (label, given),
+              abs(held/given - 1) < 1e-5, "(%.1e apart)" % abs(held/given - 1))
+        data = np.loadtxt(os.path.join(case, "DEM", "post", "particles.4000.txt"), skiprows=9)
+        layer = np.round(data[:, 1]/0.00499 - 0.5).astype(int)
+        runs[conductivity] = np.bincount(layer, data[:, 2])/np.bincount(layer)
+    moved = np.max(np.abs(runs["1e4"] - runs["1e-6"]))/10
+    check("conduction moves heat along the bed: the layers' temperatures at 2 s differ from the run "
+          "without it by more than 0.02 of the inlet's rise", moved > 0.02, "(%.3f)" % moved)
+
 def test_heated_bed():
     print("heatedBed tutorial, 0.02 s: heat the beads receive, as LIGGGHTS integrates it; continued = uninterrupted")
     case = copy_tutorial("heatedBed", "heatedBed")
@@ -1481,7 +1521,7 @@ def test_coupling_scale():
 
 
 def main():
-    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_lift_virtual_mass, test_heat_transfer, test_thermal_front, test_heated_bed, test_restart, test_bed_restart, test_serial_parallel,
+    checks.run([test_coupling_scale, test_settling_sphere, test_drag_laws, test_lift_virtual_mass, test_heat_transfer, test_thermal_front, test_particle_conduction, test_heated_bed, test_restart, test_bed_restart, test_serial_parallel,
                 test_forces_dictionary, test_bad_input, test_parcels, test_parcels_2d, test_packed_bed,
                 test_fluidised_bed, test_riser, test_spouted_bed, test_cylinder_bed, test_mueller_bed], sys.argv[1:])
     return checks.summary("coupling")

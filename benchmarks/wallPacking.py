@@ -15,6 +15,7 @@ Then the parcels again with their walls moved out by s = c (h - 1) d, c the
 beads' wall void in diameters: a parcel packing leaves c h d per wall area
 from its walls, so with every parcel's whole volume kept inside the fluid
 the slot holds the beads' solids; that solids fraction is the last column.
+The same for a cylinder of 30 mm (the wall moved out by the slot's rule).
 
 usage: wallPacking.py [--factors 1,2,3,4] [--jobs 2]     runs what is missing
        wallPacking.py --analyse                          results/ from the runs
@@ -35,6 +36,7 @@ ROOT = os.path.dirname(HERE)
 WORK = os.path.join(ROOT, "build", "wallPacking")
 RESULTS = os.path.join(HERE, "wallPacking", "results")
 DEPTH = 0.04
+CYLINDER = 0.015        # the cylinder's radius
 HEIGHT = 0.12           # the settled bed's height aimed at
 RADIUS = 1.25e-3
 SOLIDS = 0.6            # to size the count
@@ -42,11 +44,11 @@ SOLIDS = 0.6            # to size the count
 SCRIPT = """# {label}: poured and settled, every particle written
 atom_style      granular
 atom_modify     map array
-boundary        p {yboundary} f
+boundary        {boundary}
 newton          off
 communicate     single vel yes
 units           si
-region          domain block 0 {width} {ylo} {yhi} 0 {top} units box
+region          domain block {box} 0 {top} units box
 create_box      1 domain
 neighbor        {skin} bin
 neigh_modify    delay 0
@@ -63,7 +65,7 @@ fix floor all wall/gran model hertz tangential history primitive type 1 zplane 0
 fix integr all nve/sphere
 fix pts all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant {radius}
 fix pdd all particledistribution/discrete 32452843 1 pts 1.0
-region          insreg block 0 {width} {ylo} {yhi} {radius} {fillHigh} units box
+region          insreg {insert} {radius} {fillHigh} units box
 fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once &
     overlapcheck yes all_in yes particles_in_region {count} region insreg
 thermo          10000
@@ -80,17 +82,27 @@ def case(geometry, h):
 
 
 def write_case(geometry, h, shift=0.0):
-    """shift: the walls moved out by it on each side (geometry "shifted")"""
+    """shift: the walls moved out by it (geometries "shifted" and "cylinderShifted")"""
     radius = RADIUS*h
-    width = max(0.04, 24*radius)          # periodic in x: 12 diameters at least
-    count = int(round(SOLIDS*width*DEPTH*HEIGHT/(4/3*math.pi*radius**3)))
-    walls = ("fix front all wall/gran model hertz tangential history primitive type 1 yplane %g\n"
-             "fix back all wall/gran model hertz tangential history primitive type 1 yplane %g"
-             % (-shift, DEPTH + shift) if geometry != "bulk" else "")
     step = 1e-5*h
-    text = SCRIPT.format(label="%s, h = %g" % (geometry, h), yboundary="p" if geometry == "bulk" else "f",
-                         width=width, ylo=-shift, yhi=DEPTH + shift, top=0.3, skin=0.6e-3*h, step=step,
-                         walls=walls, radius=radius, fillHigh=0.29, count=count, steps=int(round(0.8/step)))
+    wall = "fix %s all wall/gran model hertz tangential history primitive type 1 %s"
+    if geometry.startswith("cylinder"):
+        big = CYLINDER + shift
+        count = int(round(SOLIDS*math.pi*CYLINDER**2*HEIGHT/(4/3*math.pi*radius**3)))
+        boundary, box = "f f f", "%g %g %g %g" % (-big, big, -big, big)
+        insert = "cylinder z 0 0 %g" % big
+        walls = wall % ("side", "zcylinder %g 0 0" % big)
+    else:
+        width = max(0.04, 24*radius)          # periodic in x: 12 diameters at least
+        count = int(round(SOLIDS*width*DEPTH*HEIGHT/(4/3*math.pi*radius**3)))
+        boundary = "p p f" if geometry == "bulk" else "p f f"
+        box = "0 %g %g %g" % (width, -shift, DEPTH + shift)
+        insert = "block %s" % box
+        walls = "" if geometry == "bulk" else \
+            wall % ("front", "yplane %g" % -shift) + "\n" + wall % ("back", "yplane %g" % (DEPTH + shift))
+    text = SCRIPT.format(label="%s, h = %g" % (geometry, h), boundary=boundary, box=box, insert=insert,
+                         top=0.3, skin=0.6e-3*h, step=step, walls=walls, radius=radius, fillHigh=0.29,
+                         count=count, steps=int(round(0.8/step)))
     path = case(geometry, h)
     os.makedirs(path, exist_ok=True)
     open(os.path.join(path, "in.packing"), "w").write(text)
@@ -122,6 +134,9 @@ def analyse_run(geometry, h, bins):
     d = 2*r
     surface = np.percentile(z, 99) + r
     keep = (z > 2.5*d) & (z < surface - 2.5*d)
+    if geometry.startswith("cylinder"):
+        # every sphere's whole volume in the fluid: inside the wall, or kept when it reaches past
+        return keep.sum()*4/3*math.pi*r**3/(math.pi*CYLINDER**2*(surface - 5*d)), None, d, surface, keep.sum()
     text = open(os.path.join(case(geometry, h), "in.packing")).read()
     width = float(text.split("region          domain block 0 ")[1].split()[0])
     box = width*DEPTH*((surface - 2.5*d) - 2.5*d)
@@ -157,7 +172,7 @@ def analyse(factors):
     os.makedirs(RESULTS, exist_ok=True)
     rows, profiles = [], {}
     bins = 160
-    shifted = {}
+    shifted, cylinder, cylinderVoid, cylinderShifted = {}, {}, {}, {}
     for h in factors:
         bulk, _, d, _, _ = analyse_run("bulk", h, bins)
         mean, profile, d, surface, n = analyse_run("slot", h, bins)
@@ -165,6 +180,12 @@ def analyse(factors):
         profiles[h] = profile
         if h > 1 and os.path.isfile(os.path.join(case("shifted", h), "final.txt")):
             shifted[h] = analyse_run("shifted", h, bins)[0]
+        if os.path.isfile(os.path.join(case("cylinder", h), "final.txt")):
+            cylinder[h] = analyse_run("cylinder", h, bins)[0]
+            # the void per wall area over the cylinder's wall, R/2 of its cross-section per wall area
+            cylinderVoid[h] = (bulk - cylinder[h])*CYLINDER/2/(bulk*d)
+        if h > 1 and os.path.isfile(os.path.join(case("cylinderShifted", h), "final.txt")):
+            cylinderShifted[h] = analyse_run("cylinderShifted", h, bins)[0]
     with open(os.path.join(RESULTS, "wallPacking.csv"), "w") as f:
         f.write("h,diameter_mm,particles_counted,surface_mm,bulk_solids,slot_solids,wall_void_diameters,"
                 "wall_shift_mm,shifted_solids\n")
@@ -186,6 +207,23 @@ def analyse(factors):
             moved = ("%.3f | %+.3f" % (shifted[h], shifted[h] - rows[0][5])) if h in shifted else "| "
             f.write("| %g | %.1f mm | %d | %.3f | %.3f | %+.3f | %.3f d | %.2f mm | %s |\n"
                     % (h, dmm, n, b, m, m - rows[0][5], e, shift(h)*1e3, moved))
+    if cylinder:
+        with open(os.path.join(RESULTS, "cylinder.csv"), "w") as f:
+            f.write("h,cylinder_solids,wall_void_diameters,wall_shift_mm,shifted_solids\n")
+            for h in sorted(cylinder):
+                f.write("%g,%.4f,%.3f,%.3f,%s\n" % (h, cylinder[h], cylinderVoid[h], shift(h)*1e3,
+                        "%.4f" % cylinderShifted[h] if h in cylinderShifted else ""))
+        with open(os.path.join(RESULTS, "cylinder.md"), "w") as f:
+            f.write("| h | solids fraction, cylinder | from the beads' | wall void per wall area | wall moved out "
+                    "by | solids fraction, wall moved | from the beads' |\n|---|---|---|---|---|---|---|\n")
+            for h in sorted(cylinder):
+                moved = ("%.3f | %+.3f" % (cylinderShifted[h], cylinderShifted[h] - cylinder[1])
+                         if h in cylinderShifted else "| ")
+                f.write("| %g | %.3f | %+.3f | %.3f d | %.2f mm | %s |\n" % (h, cylinder[h], cylinder[h] - cylinder[1],
+                        cylinderVoid[h], shift(h)*1e3, moved))
+        for h in sorted(cylinder):
+            print("cylinder h = %g: %.4f, wall void %.3f diameters%s" % (h, cylinder[h], cylinderVoid[h],
+                  ", walls moved: %.4f" % cylinderShifted[h] if h in cylinderShifted else ""))
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -217,6 +255,11 @@ def main():
             print(message, flush=True)
         # the walls moved by the rule, the beads' wall void measured above
         for message in pool.map(lambda h: run("shifted", h, shift(h)), [h for h in factors if h > 1]):
+            print(message, flush=True)
+        # a cylinder of 30 mm, and the parcels' wall moved out by the slot's rule
+        jobs = [("cylinder", h, 0.0) for h in factors] + \
+            [("cylinderShifted", h, shift(h)) for h in factors if h > 1]
+        for message in pool.map(lambda j: run(*j), jobs):
             print(message, flush=True)
     analyse(factors)
     return 0

@@ -26,6 +26,7 @@ Foam::dictionary Foam::voidFractionModel::checkedCoeffs
     // the kinds of what this constructor reads, for any caller's dictionary
     keywordSchema::checkKind(dict, "alphaMin", keywordSchema::oneNumber);
     keywordSchema::checkKind(dict, "twoDimensional", keywordSchema::onOff);
+    keywordSchema::checkKind(dict, "keepVolumeBeyondMesh", keywordSchema::onOff);
     keywordSchema::checkKind(dict, modelType + "Coeffs", keywordSchema::subDictionary);
     const dictionary coeffs(dict.subOrEmptyDict(modelType + "Coeffs"));
     modelCoefficients::schema(modelType).check(coeffs);
@@ -46,6 +47,7 @@ Foam::voidFractionModel::voidFractionModel
     locator_(mesh),
     limiter_(mesh, alphaMin_),
     twoD_(dict.lookupOrDefault<bool>("twoDimensional", false)),
+    keepBeyondMesh_(dict.lookupOrDefault<bool>("keepVolumeBeyondMesh", false)),
     emptyDir_(0),
     slabMid_(0),
     thickness_(0),
@@ -102,10 +104,32 @@ Foam::label Foam::voidFractionModel::collectStatistics(const particleData& parti
     found.setSize(particles.size());
     forAll(found, p) found[p] = (step_.centreCells[p] >= 0);
     combineSums(step_.fractionSum, found);
+    if (keepBeyondMesh_) keepVolumeBeyondMesh(found);
     return stats_.collect
     (
         step_.fractionSum, found, step_.particleVolumes, step_.holders, step_.solid, limiter_.nOverLimit(step_.solid)
     );
+}
+
+
+void Foam::voidFractionModel::keepVolumeBeyondMesh(const scalarField& found)
+{
+    // the sums are combined over the ranks and the periodic images joined:
+    // what a particle misses is beyond a boundary patch, and each rank
+    // holding part of it scales its part by the same factor
+    forAll(step_.fractionSum, p)
+    {
+        const scalar f = step_.fractionSum[p];
+        if (found[p] <= 0 || f <= SMALL || f >= 1) continue;
+        const scalar s = 1/f;
+        const scalar volume = step_.particleVolumes[p];
+        for (label k = step_.weights.begin(p); k < step_.weights.end(p); ++k)
+        {
+            step_.solid[step_.weights.cell(k)] += (s - 1)*step_.weights.fraction(k)*volume;
+        }
+        step_.weights.scale(p, s);
+        step_.fractionSum[p] = 1;
+    }
 }
 
 

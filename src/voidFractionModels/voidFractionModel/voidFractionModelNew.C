@@ -48,6 +48,7 @@ void Foam::voidFractionModel::addKeywords(keywordSchema& schema)
     schema.add("voidFractionModel", keywordSchema::oneWord);
     schema.add("alphaMin", keywordSchema::oneNumber);
     schema.add("twoDimensional", keywordSchema::onOff);
+    schema.add("keepVolumeBeyondMesh", keywordSchema::onOff);
     // any model's, so that one file can hold them all for -model to choose
     for (const word& m : modelCoefficients::models())
     {

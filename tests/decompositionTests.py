@@ -44,7 +44,7 @@ def parallel_field(case, n_ranks, n_cells):
 
 def volume_outside(out):
     """The volume outside the mesh and the count of spheres reaching out."""
-    m = re.search(r"reaching outside (\d+), volume outside (\S+)", out)
+    m = re.search(r"reaching outside (\d+), volume outside ([^,\s]+)", out)
     return (int(m.group(1)), float(m.group(2))) if m else (None, None)
 
 

@@ -39,7 +39,8 @@ FORCES = {"pressureGradient", "buoyancy", "SaffmanMeiLift", "virtualMass"}
 MODEL_COEFFS = {m + "Coeffs" for m in CHOICES["voidFractionModel"]}
 KEYWORDS = set(CHOICES) | MODEL_COEFFS | {
     "demScript", "demRestartScript", "demScreen", "couplingInterval", "forces", "alphaMin",
-    "reportExchange", "twoDimensional", "virtualMassCoefficient", "coarseGraining"}
+    "reportExchange", "twoDimensional", "virtualMassCoefficient", "coarseGraining",
+    "keepVolumeBeyondMesh"}
 REQUIRED = {"demScript", "couplingInterval", "dragModel", "voidFractionModel"}
 # the case: one DEM type, deltaT 5e-4 s, DEM step 5e-5 s, a 3D mesh
 DEM_SCRIPT = "DEM/in.liggghts"
@@ -59,6 +60,7 @@ VALID = {
     "couplingInterval": ["1", "2", "5", "20"], "alphaMin": ["0", "0.2"],
     "forces": ["()", "(buoyancy)", "(virtualMass buoyancy pressureGradient)"],
     "reportExchange": ["yes", "0"], "particleOutput": ["ascii"], "twoDimensional": ["false", "off"],
+    "keepVolumeBeyondMesh": ["on", "off"],
     "virtualMassCoefficient": ["0.5", "0"], "demScreen": ['"log.screen"'],
     "demRestartScript": ['"DEM/in.other"'], "demScript": ['"./DEM/in.liggghts"'],
     "kernelCoeffs": ["{ cutoff 2; reflectAtWalls off; }"], "diffusionCoeffs": ["{ nSteps 2; }"],
@@ -72,7 +74,7 @@ MODEL_KEYS = {
     "voxelCoeffs": {"voxelSize": "n", "voxelsPerSide": "n", "voxelsPerDiameter": "n", "voxelsPerCell": "n"},
     "hybridCoeffs": {"subGridResolution": "n"}, "centroidCoeffs": {}, "analyticalCoeffs": {},
 }
-OPTIONAL_TO_ADD = ["alphaMin", "reportExchange", "particleOutput", "twoDimensional",
+OPTIONAL_TO_ADD = ["alphaMin", "reportExchange", "particleOutput", "twoDimensional", "keepVolumeBeyondMesh",
                    "virtualMassCoefficient", "coarseGraining", "demScreen", "kernelCoeffs",
                    "diffusionCoeffs", "formulation", "forces", "particlesOutside"]
 
@@ -118,7 +120,7 @@ def value_problem(key, value, entries):
         return unknown[0] if unknown else None
     if key == "alphaMin":
         return None if is_number(k) and 0 <= v < 1 else key
-    if key in ("reportExchange", "twoDimensional"):
+    if key in ("reportExchange", "twoDimensional", "keepVolumeBeyondMesh"):
         ok = (k == "word" and v in SWITCHES) or (k == "whole" and v in (0, 1))
         if not ok:
             return key

@@ -15,11 +15,12 @@ Foam::label Foam::mappingStatistics::collect
     const scalarField& particleVolumes,
     const particleHolders& holders,
     const scalarField& solid,
-    const label nOverLimit
+    const label nOverLimit,
+    const bool keepsOutside
 )
 {
     // counts travel as scalars: exact far beyond any particle count
-    enum { kNParticles, kNOutside, kNCut, kParticleVolume, kMeshedVolume, kSolid, kNOver, kNSums };
+    enum { kNParticles, kNOutside, kNCut, kParticleVolume, kMeshedVolume, kKept, kSolid, kNOver, kNSums };
     scalarField sums(kNSums, Zero);
     forAll(fractionSum, p)
     {
@@ -30,6 +31,10 @@ Foam::label Foam::mappingStatistics::collect
         sums[kMeshedVolume] += fractionSum[p]*Vp;
         if (centreFound[p] == 0) sums[kNOutside] += 1;
         else if (fractionSum[p] < 1 - wholeTolerance) sums[kNCut] += 1;
+        if (keepsOutside && centreFound[p] > 0 && fractionSum[p] > 0 && fractionSum[p] < 1)
+        {
+            sums[kKept] += (1 - fractionSum[p])*Vp;
+        }
     }
     sums[kSolid] = sum(solid);
     sums[kNOver] = nOverLimit;
@@ -39,6 +44,7 @@ Foam::label Foam::mappingStatistics::collect
     nCut = label(sums[kNCut]);
     particleVolume = sums[kParticleVolume];
     meshedVolume = sums[kMeshedVolume];
+    keptVolume = sums[kKept];
     solidVolume = sums[kSolid];
     return label(sums[kNOver]);
 }
@@ -55,7 +61,8 @@ void Foam::mappingStatistics::setRange(const scalarField& voidFraction)
 
 Foam::scalar Foam::mappingStatistics::conservationError() const
 {
-    return mag(solidVolume - meshedVolume)/max(meshedVolume, VSMALL);
+    const scalar held = meshedVolume + keptVolume;
+    return mag(solidVolume - held)/max(held, VSMALL);
 }
 
 
@@ -70,7 +77,8 @@ void Foam::mappingStatistics::write(Ostream& os, const word& modelType) const
         << ", conservation error " << conservationError() << nl
         << "    particles with centre outside the mesh " << nOutside
         << ", reaching outside " << nCut
-        << ", volume outside " << particleVolume - meshedVolume << nl
+        << ", volume outside " << particleVolume - meshedVolume
+        << ", kept in the mesh " << keptVolume << nl
         << "    void fraction min " << minVoidFraction
         << " max " << maxVoidFraction
         << ", volume moved by alphaMin " << movedVolume << endl;

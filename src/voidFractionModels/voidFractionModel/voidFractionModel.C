@@ -105,10 +105,18 @@ Foam::label Foam::voidFractionModel::collectStatistics(const particleData& parti
     forAll(found, p) found[p] = (step_.centreCells[p] >= 0);
     combineSums(step_.fractionSum, found);
     if (keepBeyondMesh_) keepVolumeBeyondMesh(found);
-    return stats_.collect
+    const label nOver = stats_.collect
     (
-        step_.fractionSum, found, step_.particleVolumes, step_.holders, step_.solid, limiter_.nOverLimit(step_.solid)
+        step_.fractionSum, found, step_.particleVolumes, step_.holders, step_.solid,
+        limiter_.nOverLimit(step_.solid), keepBeyondMesh_
     );
+    if (keepBeyondMesh_)
+    {
+        // the weights now sum to one: gathers (forces, interpolation)
+        // divide by these sums
+        forAll(found, p) if (found[p] > 0 && step_.fractionSum[p] > 0) step_.fractionSum[p] = 1;
+    }
+    return nOver;
 }
 
 
@@ -116,11 +124,12 @@ void Foam::voidFractionModel::keepVolumeBeyondMesh(const scalarField& found)
 {
     // the sums are combined over the ranks and the periodic images joined:
     // what a particle misses is beyond a boundary patch, and each rank
-    // holding part of it scales its part by the same factor
+    // holding part of it scales its part by the same factor. fractionSum
+    // keeps the share inside for the statistics
     forAll(step_.fractionSum, p)
     {
         const scalar f = step_.fractionSum[p];
-        if (found[p] <= 0 || f <= SMALL || f >= 1) continue;
+        if (found[p] <= 0 || f >= 1 || f <= 0) continue;
         const scalar s = 1/f;
         const scalar volume = step_.particleVolumes[p];
         for (label k = step_.weights.begin(p); k < step_.weights.end(p); ++k)
@@ -128,7 +137,6 @@ void Foam::voidFractionModel::keepVolumeBeyondMesh(const scalarField& found)
             step_.solid[step_.weights.cell(k)] += (s - 1)*step_.weights.fraction(k)*volume;
         }
         step_.weights.scale(p, s);
-        step_.fractionSum[p] = 1;
     }
 }
 

@@ -14,7 +14,8 @@ Description
     1e-12: the counts of particles outside and cut, the particles' and the
     meshed volume, the conservation error against the field's solid and
     the void fraction range against hand-computed values, and the summary
-    in 4 significant digits. Ends with 'mappingStatistics: N passed, M
+    in 4 significant digits; the same particles with the part outside kept
+    in the mesh. Ends with 'mappingStatistics: N passed, M
     failed'.
 
 \*---------------------------------------------------------------------------*/
@@ -80,6 +81,18 @@ int main(int argc, char *argv[])
     near("summary: moved volume in 4 digits", contains(text, "volume moved by alphaMin 1.235e-10"), 1, 0);
     near("summary: range", contains(text, "void fraction min 0.35 max 1"), 1, 0);
     near("the stream's precision is given back", os.precision(), IOstream::defaultPrecision(), 0);
+
+    // kept: the parts outside of the particles centred inside, 1 nL and
+    // 4e-12 nL, are in the field; the one centred outside is not
+    const scalarField keptSolid(List<scalar>({4*nL, 3*nL}));
+    mappingStatistics k;
+    k.collect(fractionSum, centreFound, volumes, everyParticleHere, keptSolid, 0, true);
+    near("kept: the parts outside of particles centred inside (rel)", k.keptVolume/((1 + 4e-12)*nL), 1, 1e-15);
+    near("kept: still one cut by the boundary", k.nCut, 1, 0);
+    near("kept: the field holds meshed + kept (rel error)", k.conservationError(), 0, 1e-15);
+    OStringStream ks;
+    k.write(ks, "analytical");
+    near("summary: outside and kept", contains(ks.str(), "volume outside 4e-09, kept in the mesh 1e-09"), 1, 0);
 
     return testHarness::summary("mappingStatistics");
 }

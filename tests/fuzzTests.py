@@ -526,6 +526,9 @@ def scale_case_problem(opts):
     parcels = "parcels" in opts
     if "factor" not in opts or not finite(opts["factor"]):
         return "-factor"
+    if "wallVoid" in opts:
+        if not parcels or not finite(opts["wallVoid"]) or not 0 <= float(opts["wallVoid"]) < 0.5:
+            return "-wallVoid"
     for name in ("minCells", "relativeSmoothing"):
         if name in opts and (not parcels or "keepMesh" in opts):
             return "-" + name
@@ -564,7 +567,7 @@ UTILITIES = {
     # name: (the valid command's options, optional ones, flags, oracle)
     "demVoidFraction": ({"dump": "p.dump"}, ["model", "repeat", "deltaT", "time", "name", "previous"],
                         ["latest", "distribute"], dem_void_fraction_problem),
-    "scaleCase": ({"factor": "2", "output": "OUT"}, ["parcels", "minCells"],
+    "scaleCase": ({"factor": "2", "output": "OUT"}, ["parcels", "minCells", "wallVoid"],
                   ["keepMesh", "relativeSmoothing", "overwrite"], scale_case_problem),
     "voidFractionBenchmark": ({"dump": "p.dump"}, ["sample"], [], benchmark_problem),
 }

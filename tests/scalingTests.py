@@ -205,6 +205,66 @@ def test_parcel_parameters():
           rc == 0 and "parcels of 3^2 disks" in text and got == (1111, 3e-5), text[-400:] if rc else "(got %s)" % (got,))
 
 
+def test_parcel_walls():
+    print("scaleCase -parcels -wallVoid: the DEM's walls on the mesh's sides moved out by c (h - 1) d")
+    case = tutorial("spoutedBed", "walls-source")
+    out = case + "-h3"
+    rc, text = sh("scaleCase -factor 3 -parcels cubic -keepMesh -wallVoid 0.166 -output %s -overwrite" % out,
+                  case, check=False)
+    check("spouted bed, h = 3: scaleCase ran", rc == 0, text[-500:] if rc else "")
+    if rc:
+        return
+    settings = open(os.path.join(out, "DEM", "in.settings")).read()
+    moved = {m.group(1): m.group(2) for m in
+             re.finditer(r"(?m)^variable\s+(\w+)MovedOut\s+equal\s+(\S+)$", settings)}
+    s = 0.166 * 2 * 0.0025   # c (h - 1) d for beads of 2.5 mm, by hand
+    want = {"left": "${negHalfWidth}-", "right": "${halfWidth}+", "front": "0.0-", "back": "${depth}+",
+            "lid": "${top}+"}
+    check("the four side walls and the lid moved out, the floor above the inlet channel left",
+          sorted(moved) == sorted(want), "(got %s)" % sorted(moved))
+    for wall, start in want.items():
+        value = moved.get(wall, "")
+        check("%s: %s%.6g" % (wall, start, s), value.startswith(start) and
+              abs(float(value[len(start):]) - s) < 1e-15, "(got %s)" % value)
+        check("%s: the fix takes the moved position" % wall,
+              re.search(r"(?m)^fix %s .*plane \$\{%sMovedOut\}" % (wall, wall), settings) is not None)
+    check("the floor printed as left, not on the mesh's side",
+          re.search(r"wall floor .*not on the mesh's side, left", text) is not None)
+    props = open(os.path.join(out, "constant", "couplingProperties")).read()
+    check("keepVolumeBeyondMesh on", re.search(r"(?m)^keepVolumeBeyondMesh\s+on;", props) is not None)
+    # LIGGGHTS takes the moved walls: 3000 steps of the packing, and a parcel
+    # centred nearer the front than a radius lies against the wall moved out
+    dem = os.path.join(out, "DEM")
+    edit(os.path.join(dem, "in.packing"), r"^run\s+.*$",
+         "run 3000\nvariable ymin equal bound(all,ymin)\n"
+         "print \"WALLS ${frontMovedOut} ${backMovedOut} ${leftMovedOut} ${rightMovedOut} ${ymin}\"")
+    rc, log = sh("liggghts -in in.packing -log log.packing -screen screen.packing && "
+                 "grep '^WALLS' log.packing", dem, check=False)
+    got = [float(v) for v in log.split()[1:]] if rc == 0 and log.startswith("WALLS") else []
+    check("LIGGGHTS evaluates the walls at -s, 0.04 + s, -0.14 - s, 0.14 + s",
+          len(got) == 5 and max(abs(g - w) for g, w in zip(got, (-s, 0.04 + s, -0.14 - s, 0.14 + s))) < 1e-12,
+          "(got %s)" % got if got else log[-400:])
+    check("a parcel's centre nearer the front than its radius 3.75 mm", len(got) == 5 and got[4] < 0.00375,
+          "(y min %s)" % (got[4] if got else None))
+
+    cyl = tutorial("cylinderBed", "walls-cylinder")
+    rc, text = sh("scaleCase -factor 2 -parcels cubic -keepMesh -wallVoid 0.166 -output %s-h2 -overwrite" % cyl,
+                  cyl, check=False)
+    settings = open(os.path.join(cyl + "-h2", "DEM", "in.settings")).read() if rc == 0 else ""
+    m = re.search(r"(?m)^variable\s+columnMovedOut\s+equal\s+\$\{radiusColumn\}\+(\S+)$", settings)
+    check("cylinder bed, h = 2: the column's radius out by 0.166 mm, the distributor left",
+          m is not None and abs(float(m.group(1)) - 0.166e-3) < 1e-15 and "gridMovedOut" not in settings,
+          text[-400:] if rc else "")
+    rc, text = sh("scaleCase -factor 2 -parcels cubic -keepMesh -output %s-same -overwrite" % cyl, cyl, check=False)
+    same = rc == 0 and open(os.path.join(cyl + "-same", "DEM", "in.settings")).read() == \
+        open(os.path.join(cyl, "DEM", "in.settings")).read()
+    check("without -wallVoid the scripts stay as they are", same and "-wallVoid 0.166 moves" in text)
+    for args, needle in (("-parcels cubic -wallVoid 0.5", "[0, 0.5)"), ("-wallVoid 0.166", "goes with -parcels"),
+                         ("-parcels cubic -wallVoid x", "wallVoid")):
+        rc, text = sh("scaleCase -factor 2 %s -keepMesh -output %s-bad -overwrite" % (args, cyl), cyl, check=False)
+        check("%s: refused naming %s" % (args, needle), rc == 1 and needle in text, text[-300:])
+
+
 def test_coarsened_fluid():
     print("scaleCase -parcels: the fluid coarsened with the parcels (the fluidised bed, h = 2 and 3)")
     case = tutorial("fluidisedBed", "coarse-source")
@@ -493,7 +553,7 @@ def test_wide_bed_study():
 
 def main():
     checks.run([test_written_values, test_settling_sphere, test_packed_bed, test_fluidised_bed,
-                test_parcel_parameters, test_coarsened_fluid, test_bed_rule, test_compression_precision, test_bad_input, test_run_bits,
+                test_parcel_parameters, test_parcel_walls, test_coarsened_fluid, test_bed_rule, test_compression_precision, test_bad_input, test_run_bits,
                 test_wide_bed_study], sys.argv[1:])
     return checks.summary("scaling")
 

@@ -6,6 +6,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "caseScaler.H"
+#include "parcelWalls.H"
 #include "caseFiles.H"
 #include "fluidCoarsener.H"
 #include "exactScaling.H"
@@ -569,10 +570,13 @@ void Foam::caseScaler::makeParcels
     const word& law,
     const bool coarsenFluid,
     const List<fluidCoarsener::minCellRule>& minCells,
-    const bool relativeSmoothing
+    const bool relativeSmoothing,
+    const scalar wallVoid
 ) const
 {
     parcelSetting s(checkParcelCase(law, coarsenFluid));
+    // the mesh's sides before the fluid is coarsened (and its points removed)
+    moveWalls(s, particleDiameter(), wallVoid);
     fluidCoarsener::meshGrowth growth{h_, h_, GREAT};
     if (coarsenFluid)
     {
@@ -632,6 +636,55 @@ void Foam::caseScaler::scaleAll() const
 }
 
 
+Foam::scalar Foam::caseScaler::particleDiameter() const
+{
+    scalar d = 0;
+    for (const demParameter& p : demParameters())
+    {
+        if (p.roles.found("particle") && p.dims == dimLength)
+        {
+            if (p.name == "radius") d = 2*p.value;
+            if (p.name == "diameter") d = p.value;
+        }
+    }
+    return d;
+}
+
+
+void Foam::caseScaler::moveWalls
+(
+    const parcelSetting& s,
+    const scalar diameter,
+    const scalar wallVoid
+) const
+{
+    if (!(wallVoid > 0) || h_ == 1)
+    {
+        Info<< "DEM walls left where they are (-wallVoid " << parcelWalls::beadsWallVoid
+            << " moves those on the mesh's sides out, so that parcels pack at a wall"
+            << " as beads do)" << nl << endl;
+        return;
+    }
+    Info<< "DEM walls for parcels: out by c (h - 1) d, c = " << wallVoid
+        << " particle diameters of extra void at a wall per wall area, so that the"
+        << " parcels' layer at a wall holds the particles' solids:" << nl;
+    if (s.twoD || !(diameter > 0))
+    {
+        Info<< "    walls left: " << (s.twoD ? "the rule is for spheres, not disks"
+            : "no {particle} radius or diameter in DEM/in.parameters") << nl << endl;
+        return;
+    }
+    if (parcelWalls(dir_, h_, diameter, wallVoid).move())
+    {
+        const fileName coupling(dir_/"constant"/"couplingProperties");
+        caseFiles::setEntry(coupling, {"keepVolumeBeyondMesh"}, "on", "scaleCase -parcels: walls moved out");
+        Info<< "    keepVolumeBeyondMesh: on (the parcels' part beyond the mesh's walls"
+            << " stays in their cells)" << nl;
+    }
+    Info<< endl;
+}
+
+
 void Foam::caseScaler::warnOfNarrowBeds
 (
     const dictionary& coupling,
@@ -639,16 +692,7 @@ void Foam::caseScaler::warnOfNarrowBeds
     const scalar narrowestCell
 ) const
 {
-    // the parcel's diameter from the DEM's radius or diameter variable
-    scalar parcel = 0;
-    for (const demParameter& p : demParameters())
-    {
-        if (p.roles.found("particle") && p.dims == dimLength)
-        {
-            if (p.name == "radius") parcel = 2*p.value;
-            if (p.name == "diameter") parcel = p.value;
-        }
-    }
+    const scalar parcel = particleDiameter();
     if (!(parcel > 0)) return;
     const word model(coupling.getOrDefault<word>("voidFractionModel", word::null));
     if (model == "centroid" && parcel > narrowestCell)

@@ -44,13 +44,18 @@ Description
     -keepMesh keeps the fluid's mesh and steps (the parcels then see h
     times fewer cells each).
     A 2D case (twoDimensional true in couplingProperties) gets parcels of
-    h^2 disks.
+    h^2 disks. The DEM's primitive walls on the mesh's sides move out by
+    c (h - 1) d, so that the parcels' looser layer at a wall holds the
+    particles' solids, and keepVolumeBeyondMesh keeps the parcels' part
+    beyond the mesh, with -wallVoid c (parcelWalls; c = 0.166 for beads at
+    a flat wall). Without it the walls stay.
 
 Usage
     scaleCase -factor 2 -output ../bed-h2
     scaleCase -factor 2 -parcels cubic -output ../bed-parcels
     scaleCase -factor 2 -parcels cubic -keepMesh -output ../bed-parcels-fine
     scaleCase -factor 4 -parcels cubic -minCells '(z 12 0.042)' -output ../bed-h4
+    scaleCase -factor 3 -parcels cubic -wallVoid 0.166 -output ../bed-h3-walls
 
 \*---------------------------------------------------------------------------*/
 
@@ -116,6 +121,13 @@ int main(int argc, char *argv[])
         " '(z 12 0.2) (x 20)': 12 across the 0.2 m settled bed in z, 20 across"
         " the mesh in x (cells grow by h at most, and less where a rule says)"
     );
+    argList::addOption
+    (
+        "wallVoid", "c",
+        "with -parcels: the DEM's walls on the mesh's sides move out by"
+        " c (h - 1) d, c the particles' extra void at a wall per wall area in"
+        " diameters (0.166: beads at a flat wall); without, they stay"
+    );
     argList::addBoolOption
     (
         "relativeSmoothing",
@@ -126,6 +138,20 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
 
     const scalar h = finiteOption(args, "factor");
+    if (args.found("wallVoid") && !args.found("parcels"))
+    {
+        FatalErrorInFunction
+            << "-wallVoid goes with -parcels" << exit(FatalError);
+    }
+    const scalar wallVoid =
+        args.found("wallVoid") ? finiteOption(args, "wallVoid") : scalar(0);
+    if (!(wallVoid >= 0 && wallVoid < 0.5))
+    {
+        // a parcel's centre stays inside the mesh while c (h - 1) < h/2
+        FatalErrorInFunction
+            << "-wallVoid " << wallVoid << ": must lie in [0, 0.5) particle diameters"
+            << exit(FatalError);
+    }
     for (const word option : {"minCells", "relativeSmoothing"})
     {
         if (args.found(option) && (!args.found("parcels") || args.found("keepMesh")))
@@ -211,7 +237,8 @@ int main(int argc, char *argv[])
             args.found("minCells")
               ? fluidCoarsener::readMinCells(args["minCells"], "minCells")
               : List<fluidCoarsener::minCellRule>(),
-            args.found("relativeSmoothing")
+            args.found("relativeSmoothing"),
+            wallVoid
         );
     }
     else

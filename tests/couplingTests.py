@@ -485,6 +485,7 @@ def test_particle_conduction():
     check("conduction moves heat along the bed: the layers' temperatures at 2 s differ from the run "
           "without it by more than 0.02 of the inlet's rise", moved > 0.02, "(%.3f)" % moved)
 
+
 def test_heated_bed():
     print("heatedBed tutorial, 0.02 s: heat the beads receive, as LIGGGHTS integrates it; continued = uninterrupted")
     case = copy_tutorial("heatedBed", "heatedBed")

@@ -245,6 +245,41 @@ def test_spouted_bed_against_fine():
               abs(compare.gaps(own, other)[0] - by_hand) < 1e-12)
 
 
+def test_spouted_bed_walls():
+    print("the spouted bed's walls.csv against the recorded profiles and .result files")
+    here = os.path.join(ROOT, "benchmarks", "spoutedBed")
+    sys.path.insert(0, here)
+    import compare
+    path = os.path.join(here, "results", "walls.csv")
+    rows = list(csv.DictReader(open(path))) if os.path.isfile(path) else []
+    check("walls.csv has runs", len(rows) >= 1, "(%d)" % len(rows))
+    fine = compare.default_fine()
+    if not os.path.exists(fine):
+        return
+    beads = compare.profiles(fine)
+    noise_fine = compare.result(fine)
+    kept = {(r["model"], r["h"]): r for r in csv.DictReader(open(os.path.join(here, "results", "againstFine.csv")))}
+    for row in rows:
+        run = os.path.join(here, "results", "walls", "%s_h%s" % (row["model"], row["h"]))
+        label = "%s h = %s, walls out" % (row["model"], row["h"])
+        if not os.path.isfile(os.path.join(run, "spoutedBed.result")):
+            check("%s: recorded profiles" % label, False)
+            continue
+        spout, annulus = compare.gaps(compare.profiles(run), beads)
+        own = compare.result(run)
+        noise = own["halves_spout_m_s"] + noise_fine["halves_spout_m_s"]
+        check("%s: spout %s from the beads' is the profiles' (%.4f)" % (label, row["spout_vs_fine_m_s"], spout),
+              abs(float(row["spout_vs_fine_m_s"]) - spout) < 6e-5)
+        check("%s: annulus %s, noise %s (%.4f, %.4f)" % (label, row["annulus_vs_fine_m_s"], row["noise_spout_m_s"],
+                                                       annulus, noise),
+              abs(float(row["annulus_vs_fine_m_s"]) - annulus) < 6e-5 and abs(float(row["noise_spout_m_s"]) - noise) < 6e-5)
+        for key in ("mad_h015", "mad_h045", "mad_h075", "dp_vs_weight"):
+            check("%s: %s is the .result's" % (label, key), abs(float(row[key]) - own[key]) <= 5e-4*abs(own[key]))
+        same = kept.get((row["model"], row["h"]), {})
+        check("%s: the walls-as-they-are column is againstFine.csv's" % label,
+              row["walls_kept_spout_vs_fine_m_s"] == same.get("spout_vs_fine_m_s"))
+
+
 def test_spouted_bed_closures():
     print("the spouted bed's closure study: closures.csv, closureStatistics.csv and dragRatios.md from their sources")
     here = os.path.join(ROOT, "benchmarks", "spoutedBed")
@@ -330,7 +365,8 @@ def test_heated_bed_table():
 def main():
     checks.run([test_links, test_readme_numbers_in_linked_sections, test_result_tables, test_coarse_bed_tables_from_runs,
                 test_study_tables_from_csv, test_compression_tables_from_csv,
-                test_spouted_bed_summary_from_results, test_spouted_bed_against_fine, test_spouted_bed_closures,
+                test_spouted_bed_summary_from_results, test_spouted_bed_against_fine, test_spouted_bed_walls,
+                test_spouted_bed_closures,
                 test_heated_bed_table],
                sys.argv[1:])
     return checks.summary("docs")

@@ -31,11 +31,13 @@ bandwidth of B metres on every mesh instead of 0.4 of the cell size, named
 <run>_b<B in mm>mm: the mesh study at one smoothing length. --wall-friction F
 and --wall-restitution E set the seeds' friction and restitution against the
 walls and the distributor (DEM/in.parameters; 0.1 and 0.98 by default),
-named <run>_wf<F> and <run>_we<E>.
+named <run>_wf<F> and <run>_we<E>. --wall-void C (with --parcels) moves the
+side walls out by C (h - 1) d (scaleCase -wallVoid), named <run>_wv<C>.
 
 usage: study.py [--models M,..] [--velocities 0.6,0.9] [--cells 2.5,1.5,4]
                 [--parcels 1.5,2] [--depth 1] [--end 5] [--bandwidth B]
-                [--wall-friction F] [--wall-restitution E] [--redo-incomplete]
+                [--wall-friction F] [--wall-restitution E] [--wall-void C]
+                [--redo-incomplete]
                 [--report | --refresh]
 """
 import argparse
@@ -69,7 +71,8 @@ VARIANTS = (("parcels", 1, 1, "_parcels%g", ", parcels h = %g", ""),
             ("end", 5, 1, "_%gs", ", %g s", " (%g s)"),
             ("bandwidth", 0, 1000, "_b%gmm", ", bandwidth %g mm", " (b %g mm)"),
             ("wall_friction", 0.1, 1, "_wf%g", ", wall friction %g", " (wall friction %g)"),
-            ("wall_restitution", 0.98, 1, "_we%g", ", wall restitution %g", " (wall restitution %g)"))
+            ("wall_restitution", 0.98, 1, "_we%g", ", wall restitution %g", " (wall restitution %g)"),
+            ("wall_void", 0, 1, "_wv%g", ", walls out by %g (h - 1) d", " (walls out, c %g)"))
 DEFAULTS = {v[0]: v[1] for v in VARIANTS}
 
 
@@ -136,8 +139,9 @@ def run(spec):
     began = time.time()
     command = "./Allrun %s %g %g %g 1 %d" % (spec["model"], spec["U"], spec["cells"], spec["end"], spec["depth"])
     if spec["parcels"] != 1:
-        command = "./Allrun parcels %g %s %g %g %g 1 %d" % (spec["parcels"], spec["model"], spec["U"], spec["cells"],
-                                                           spec["end"], spec["depth"])
+        command = "WALL_VOID=%g ./Allrun parcels %g %s %g %g %g 1 %d" % (
+            variant(spec, "wall_void"), spec["parcels"], spec["model"], spec["U"], spec["cells"], spec["end"],
+            spec["depth"])
     rc, out = sh(command, case, check=False)
     wall = time.time() - began
     with open(os.path.join(case, "log.Allrun"), "w") as f:
@@ -341,6 +345,8 @@ def main():
                         help="the seeds' friction against the walls and distributor")
     parser.add_argument("--wall-restitution", type=float, default=DEFAULTS["wall_restitution"],
                         help="the seeds' restitution against the walls and distributor")
+    parser.add_argument("--wall-void", type=float, default=DEFAULTS["wall_void"],
+                        help="with --parcels: the side walls out by this times (h - 1) d")
     parser.add_argument("--redo-incomplete", action="store_true",
                         help="run again the finished runs without the particle velocity at the measured heights")
     parser.add_argument("--report", action="store_true")
@@ -350,6 +356,9 @@ def main():
     if args.bandwidth < 0 or (args.bandwidth and set(args.models.split(",")) != {"kernel"}):
         parser.error("--bandwidth is a length in metres > 0 for --models kernel alone (got %g for %s)"
                      % (args.bandwidth, args.models))
+    if args.wall_void and not (0 < args.wall_void < 0.5 and args.parcels and not args.cells):
+        parser.error("--wall-void is in (0, 0.5) with --parcels and --cells '' (parcels only; got %g)"
+                     % args.wall_void)
     if args.wall_friction < 0 or not 0 < args.wall_restitution <= 1:
         parser.error("--wall-friction is >= 0 and --wall-restitution in (0, 1] (got %g and %g)"
                      % (args.wall_friction, args.wall_restitution))
@@ -358,7 +367,7 @@ def main():
         refresh()
     elif not args.report:
         options = dict(depth=args.depth, end=args.end, bandwidth=args.bandwidth, wall_friction=args.wall_friction,
-                       wall_restitution=args.wall_restitution)
+                       wall_restitution=args.wall_restitution, wall_void=args.wall_void)
         todo = [r for r in plan(args.models.split(","), [float(u) for u in args.velocities.split(",")],
                                 [float(c) for c in args.cells.split(",") if c],
                                 [float(h) for h in args.parcels.split(",") if h], options)

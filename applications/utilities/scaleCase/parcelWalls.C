@@ -193,8 +193,8 @@ std::string Foam::parcelWalls::moved
         }
         if (sign == 0)
         {
-            Info<< "    wall " << id << " (" << file.name() << "): " << kind << " "
-                << w[shape + 1] << " is not on the mesh's side, left" << nl;
+            Info<< "    wall " << id << " (" << file.name() << "): " << kind.c_str() << " "
+                << w[shape + 1].c_str() << " is not on the mesh's side, left" << nl;
             out << line << '\n';
             continue;
         }

@@ -25,13 +25,12 @@ usage: closures.py [--changes DiFelice,Beetstra,gasLethe] [--end 5] [--ranks 2]
 import argparse
 import os
 import re
-import shutil
 import subprocess
 import sys
 
 from carry import latest_time
 from record import wall_seconds
-from run import ENV, TUTORIAL, WORK, reached, stretch
+from run import ENV, WORK, copy_tutorial, reached, stretch
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "tests"))
@@ -66,9 +65,7 @@ def run_change(change, a):
         print("%s: recorded earlier in %s" % (change, os.path.relpath(where, HERE)))
         return
     if latest_time(case) == 0.0:
-        shutil.rmtree(top, ignore_errors=True)
-        outputs = shutil.ignore_patterns("parcels_h*", "fine", "log.*", "*.png", "*.csv", "*.result", "0")
-        shutil.copytree(TUTORIAL, top, ignore=lambda d, names: outputs(d, names) if d == TUTORIAL else set())
+        copy_tutorial(top)
         for path, key, value in CHANGES[change]:
             set_entry(os.path.join(top, path), key, value)
         print("%s: setting up and running %g s at h = %g" % (change, a.end, FACTOR), flush=True)
@@ -91,8 +88,8 @@ def drag_ratios():
              "|---|" + "---|"*len(res)]
     for a in (0.41, 0.5, 0.6, 0.7, 0.79, 0.81, 0.9, 0.95):
         cells = []
-        for re in res:
-            u = re*mu/(a*rho*d)
+        for reynolds in res:
+            u = reynolds*mu/(a*rho*d)
             g = LAWS["Gidaspow"](d, a, u, rho, mu)
             cells.append("%.2f, %.2f" % (LAWS["DiFelice"](d, a, u, rho, mu)/g, LAWS["Beetstra"](d, a, u, rho, mu)/g))
         lines.append("| %.2f | %s |" % (a, " | ".join(cells)))

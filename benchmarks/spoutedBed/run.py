@@ -81,6 +81,13 @@ def reached(case, end):
     return False
 
 
+def copy_tutorial(top):
+    """A fresh copy of the tutorial in top, without the tutorial's own runs"""
+    shutil.rmtree(top, ignore_errors=True)
+    outputs = shutil.ignore_patterns("parcels_h*", "fine", "log.*", "*.png", "*.csv", "*.result", "0")
+    shutil.copytree(TUTORIAL, top, ignore=lambda d, names: outputs(d, names) if d == TUTORIAL else set())
+
+
 def stretch(case, ranks):
     """Continue the run from its last written time to its endTime."""
     n = len(glob.glob(os.path.join(case, "log.pimpleDEMFoam*")))
@@ -107,9 +114,7 @@ def run_one(model, h, a):
         return
     carried = carried_archive(model, h)
     if latest_time(case) == 0.0:
-        shutil.rmtree(top, ignore_errors=True)
-        outputs = shutil.ignore_patterns("parcels_h*", "fine", "log.*", "*.png", "*.csv", "*.result", "0")
-        shutil.copytree(TUTORIAL, top, ignore=lambda d, names: outputs(d, names) if d == TUTORIAL else set())
+        copy_tutorial(top)
         if os.path.isfile(carried):
             print("%s h = %g: continuing the run saved in %s" % (model, h, carried))
             restore(carried, case)

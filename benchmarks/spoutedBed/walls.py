@@ -48,7 +48,7 @@ from annulus import LAYERS, annulus_solids, gas_shares
 from carry import latest_time
 from compare import default_fine, gaps, profiles, result
 from record import wall_seconds
-from run import ENV, TUTORIAL, WORK, parse_runs, reached, stretch
+from run import ENV, TUTORIAL, WORK, copy_tutorial, parse_runs, reached, stretch
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(HERE, "results")
@@ -126,9 +126,7 @@ def run_one(model, h, a):
         print("%s, wall void %s: recorded earlier in walls.csv" % (name, a.wallVoid))
         return
     if latest_time(case) == 0.0:
-        shutil.rmtree(top, ignore_errors=True)
-        outputs = shutil.ignore_patterns("parcels_h*", "fine", "log.*", "*.png", "*.csv", "*.result", "0")
-        shutil.copytree(TUTORIAL, top, ignore=lambda d, names: outputs(d, names) if d == TUTORIAL else set())
+        copy_tutorial(top)
         print("%s: setting up and running %g s with the walls out by %s (h - 1) d" % (name, a.end, a.wallVoid),
               flush=True)
         subprocess.run(["./Allrun", "%g" % h, model, "%g" % a.end, str(a.ranks), "(z 12 0.2) (x 20) (y 1 0.04)",

@@ -529,7 +529,9 @@ def scale_case_problem(opts):
     if "wallVoid" in opts:
         if not parcels or not finite(opts["wallVoid"]) or not 0 <= float(opts["wallVoid"]) < 0.5:
             return "-wallVoid"
-    for name in ("minCells", "relativeSmoothing"):
+    if "courant" in opts and not (finite(opts["courant"]) and 0 < float(opts["courant"]) <= 1):
+        return "-courant"
+    for name in ("minCells", "relativeSmoothing", "courant"):
         if name in opts and (not parcels or "keepMesh" in opts):
             return "-" + name
     if "keepMesh" in opts and not parcels:
@@ -549,6 +551,8 @@ def scale_case_problem(opts):
         rules = opts.get("minCells")
         if rules is not None and not re.fullmatch(r"(\s*\([xyz] \d+( [\d.]+)?\))+\s*", rules):
             return "-minCells"
+        if "courant" in opts:
+            return "-courant: no inlet velocity"    # the settling sphere has none
     return None
 
 
@@ -567,7 +571,7 @@ UTILITIES = {
     # name: (the valid command's options, optional ones, flags, oracle)
     "demVoidFraction": ({"dump": "p.dump"}, ["model", "repeat", "deltaT", "time", "name", "previous"],
                         ["latest", "distribute"], dem_void_fraction_problem),
-    "scaleCase": ({"factor": "2", "output": "OUT"}, ["parcels", "minCells", "wallVoid"],
+    "scaleCase": ({"factor": "2", "output": "OUT"}, ["parcels", "minCells", "wallVoid", "courant"],
                   ["keepMesh", "relativeSmoothing", "overwrite"], scale_case_problem),
     "voidFractionBenchmark": ({"dump": "p.dump"}, ["sample"], [], benchmark_problem),
 }

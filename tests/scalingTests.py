@@ -496,6 +496,74 @@ def test_bed_rule():
     check("-minCells with -keepMesh: refused", rc == 1 and "goes with -parcels and a coarsened fluid" in text)
 
 
+def test_step_rule():
+    print("scaleCase -parcels -courant: the fluid and coupling steps by the coarse bed's needs")
+    case = tutorial("fluidisedBed", "step-source")
+    sh("sed -e 's/NX/16/g; s/NY/2/g; s/NZP/2/g; s/NZ/40/g' system/blockMeshDict.template > system/blockMeshDict",
+       case)
+    rule = "-parcels cubic -minCells '(z 12 0.042)'"
+
+    def scale(extra, out, law="cubic"):
+        rc, text = sh("scaleCase -factor 2 %s %s -output %s -overwrite" % (rule.replace("cubic", law), extra, out),
+                      case, check=False)
+        if rc:
+            return rc, text, None
+        control = open(os.path.join(out, "system", "controlDict")).read()
+        props = open(os.path.join(out, "constant", "couplingProperties")).read()
+        dem = open(os.path.join(out, "DEM", "in.parameters")).read()
+        return rc, text, (float(re.search(r"(?m)^deltaT\s+(\S+);", control).group(1)),
+                          int(re.search(r"(?m)^writeInterval\s+(\d+);", control).group(1)),
+                          int(re.search(r"(?m)^couplingInterval\s+(\d+);", props).group(1)),
+                          float(re.search(r"(?m)^variable\s+demStep\s+equal\s+(\S+)", dem).group(1)))
+
+    # worked by hand: the inlet's table peaks at 1 m/s; through a packing of void 0.36: 2.7778 m/s;
+    # the narrowest coarse cell is the plenum's 3 mm: 0.5 x 0.003/2.7778 = 5.4e-4 s. Ergun at e = 0.36,
+    # d = 1 mm, 2500 kg/m3, air 1.2 kg/m3 and 1.8e-5 Pa s: tau = 2500/(150 0.64 1.8e-5/(0.36e-6)
+    # + 1.75 1.2 2.7778/1e-3) = 2500/10633.3 = 0.23511 s, a tenth 0.023511 s. 5.4e-4/1e-4 -> 5 fine
+    # steps, which divide the writeInterval 1000: deltaT 5e-4, writeInterval 200; the coupling time
+    # 5e-4 in DEM steps of at most 1e-5 x 2^1.5: ceil(17.68) = 18 steps of 2.7778e-5
+    tau = 2500/(150*0.64*1.8e-5/(0.36*1e-6) + 1.75*1.2*(1/0.36)/1e-3)
+    rc, text, got = scale("-courant 0.5", case + "-co")
+    check("-courant 0.5: scaleCase ran", rc == 0, text[-600:] if rc else "")
+    if rc == 0:
+        check("-courant 0.5: deltaT 5e-4, writeInterval 200, 18 DEM steps of 2.7778e-5 per coupling",
+              abs(got[0] - 5e-4) < 1e-18 and got[1] == 200 and got[2] == 18 and abs(got[3] - 5e-4/18) < 1e-10,
+              "(%s)" % (got,))
+        m = re.search(r"drag response time there: (\S+) s", text)
+        near("-courant 0.5: the printed response time is Ergun's (6 digits)", float(m.group(1)) if m else None,
+             tau, 1e-5*tau)
+        check("-courant 0.5: both limits printed with their numbers",
+              "at most 2.77778 m/s" in text and "on cells of 0.003 m: 0.00054 s" in text
+              and "a tenth of the response time: %.5g s" % (tau/10) in text, text[-900:])
+    # the exact law: the parcels respond h times slower, the DEM step h times the fine one
+    rc, text, got = scale("-courant 0.5", case + "-exact", law="exact")
+    m = re.search(r"drag response time there: (\S+) s", text)
+    near("-courant, exact law: the response time 2 tau", float(m.group(1)) if m else None, 2*tau, 1e-5*tau)
+    # a faster inlet (fixedValue 2 m/s): 5.5556 m/s, 2.7e-4 s -> 2 fine steps (1000 % 2 = 0)
+    edit(os.path.join(case, "0.orig", "U"), r"type\s+uniformFixedValue;\s*uniformValue\s+table\s*\(.*\);",
+         "type fixedValue; value uniform (0 0 2);")
+    rc, text, got = scale("-courant 0.5", case + "-fast")
+    check("a fixedValue inlet of 2 m/s: deltaT 2e-4 (0.5 x 0.003/5.5556 = 2.7e-4 in whole fine steps)",
+          got is not None and abs(got[0] - 2e-4) < 1e-18 and "at most 5.55556 m/s" in text, "(%s)" % (got,))
+    # a small Courant number: the rule's step is shorter than the fine Courant number's; the cells' kept
+    rc, text, got = scale("-courant 0.05", case + "-slow")
+    check("-courant 0.05: 5.4e-5 s is no longer than the fine step: deltaT stays 1e-4, said",
+          got is not None and abs(got[0] - 1e-4) < 1e-18 and "s is no longer" in text, "(%s) %s" % (got, text[-300:]))
+    # no inlet to bound the gas's speed, bad values, the rule without a coarsened fluid
+    edit(os.path.join(case, "0.orig", "U"), r"type fixedValue; value uniform \(0 0 2\);",
+         "type fixedValue; value uniform (0 0 0);")
+    rc, text, _ = scale("-courant 0.5", case + "-bad")
+    check("no inlet velocity: error names 0.orig/U", rc == 1 and "no inlet velocity in" in text
+          and "0.orig/U" in text, text[-300:])
+    for value, needle in (("0", "must lie in (0, 1]"), ("1.5", "must lie in (0, 1]"), ("nan", "not a finite number")):
+        rc, text, _ = scale("-courant %s" % value, case + "-bad")
+        check("-courant %s: error says '%s'" % (value, needle), rc == 1 and needle in text, text[-300:])
+    rc, text = sh("scaleCase -factor 2 -parcels cubic -keepMesh -courant 0.5 -output %s-bad -overwrite" % case,
+                  case, check=False)
+    check("-courant with -keepMesh: refused", rc == 1 and "goes with -parcels and a coarsened fluid" in text,
+          text[-300:])
+
+
 def test_wide_bed_study():
     print("coarseGrainedBed study: the wide bed and its coarsened cases as set up, and the summary's comparison")
     sys.path.insert(0, os.path.join(checks.ROOT, "benchmarks", "coarseGrainedBed"))
@@ -513,7 +581,9 @@ def test_wide_bed_study():
               (4, "coarsened"): ("1250", "0.002", ["(8 2 1)", "(8 2 10)"], 176, 4e-4),
               # at least 12 cells across the 42 mm bed: z 40 -> 35, the plenum's 2 stay, deltaT stays
               (3, "bed"): ("2963", "0.0015", ["(10 3 2)", "(10 3 35)"], 1110, 1e-4),
-              (4, "bed"): ("1250", "0.002", ["(8 2 2)", "(8 2 35)"], 592, 1e-4)}
+              (4, "bed"): ("1250", "0.002", ["(8 2 2)", "(8 2 35)"], 592, 1e-4),
+              # the steps by the rule (test_step_rule): 0.5 x 3 mm/2.7778 m/s -> 5 fine steps
+              (4, "bedCo0.5"): ("1250", "0.002", ["(8 2 2)", "(8 2 35)"], 592, 5e-4)}
     for (h, mesh), (count, radius, blocks, cells, dt) in expect.items():
         case = os.path.join(work, study.run_name("kernel", h, "cubic", False, mesh))
         try:
@@ -553,7 +623,7 @@ def test_wide_bed_study():
 
 def main():
     checks.run([test_written_values, test_settling_sphere, test_packed_bed, test_fluidised_bed,
-                test_parcel_parameters, test_parcel_walls, test_coarsened_fluid, test_bed_rule, test_compression_precision, test_bad_input, test_run_bits,
+                test_parcel_parameters, test_parcel_walls, test_coarsened_fluid, test_bed_rule, test_step_rule, test_compression_precision, test_bad_input, test_run_bits,
                 test_wide_bed_study], sys.argv[1:])
     return checks.summary("scaling")
 

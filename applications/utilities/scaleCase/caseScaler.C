@@ -571,7 +571,8 @@ void Foam::caseScaler::makeParcels
     const bool coarsenFluid,
     const List<fluidCoarsener::minCellRule>& minCells,
     const bool relativeSmoothing,
-    const scalar wallVoid
+    const scalar wallVoid,
+    const scalar courant
 ) const
 {
     parcelSetting s(checkParcelCase(law, coarsenFluid));
@@ -580,7 +581,11 @@ void Foam::caseScaler::makeParcels
     fluidCoarsener::meshGrowth growth{h_, h_, GREAT};
     if (coarsenFluid)
     {
-        growth = fluidCoarsener(dir_, h_, minCells, relativeSmoothing).coarsen();
+        const autoPtr<fluidStepRule> rule(stepRule(s, courant));
+        const scalar couplingSteps =
+            s.fineInterval*demValue("timestep", dimTime)/s.fluidDeltaT;
+        growth = fluidCoarsener(dir_, h_, minCells, relativeSmoothing)
+            .coarsen(rule.get(), couplingSteps);
         s.timeGrowth = growth.time;
     }
     const fileName coupling(dir_/"constant"/"couplingProperties");
@@ -633,6 +638,41 @@ void Foam::caseScaler::scaleAll() const
     {
         if (f.hasExt("data")) scaleDemData(dir_/"DEM"/f);
     }
+}
+
+
+Foam::scalar Foam::caseScaler::demValue
+(
+    const word& role,
+    const dimensionSet& dims
+) const
+{
+    for (const demParameter& p : demParameters())
+    {
+        if (p.roles.found(role) && p.dims == dims) return p.value;
+    }
+    return 0;
+}
+
+
+Foam::autoPtr<Foam::fluidStepRule> Foam::caseScaler::stepRule
+(
+    const parcelSetting& s,
+    const scalar courant
+) const
+{
+    if (!(courant > 0)) return nullptr;
+    if (s.twoD)
+    {
+        FatalErrorInFunction
+            << "-courant: the rule's packing and drag are of spheres, not disks"
+            << exit(FatalError);
+    }
+    Info<< "The fluid step by the coarse bed's needs (-courant " << courant << "):" << nl;
+    return autoPtr<fluidStepRule>::New
+    (
+        dir_, courant, particleDiameter(), demValue("particle", dimDensity), s.exact ? h_ : 1
+    );
 }
 
 

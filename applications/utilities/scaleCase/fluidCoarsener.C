@@ -317,14 +317,49 @@ void Foam::fluidCoarsener::requireUniformFields() const
 }
 
 
-void Foam::fluidCoarsener::coarsenControl(const scalar growth) const
+Foam::scalar Foam::fluidCoarsener::stepGrowth
+(
+    const fluidStepRule& rule,
+    const meshGrowth& cells,
+    const scalar couplingSteps,
+    std::string& why
+) const
+{
+    const dictionary dict(caseFiles::readDict(dir_/"system"/"controlDict"));
+    const scalar deltaT = dict.get<scalar>("deltaT");
+    const scalar allowed = rule.maxStep(cells.narrowestCell, couplingSteps);
+    const label most = label(std::floor(allowed/deltaT + 1e-9));
+    label g = most;
+    if (timeStepControlled(dict))
+    {
+        // written at the fine case's times where a divisor allows
+        const label n = dict.get<label>("writeInterval");
+        label k = most;
+        while (k > 1 && n % k) --k;
+        if (k > 1) g = k;
+    }
+    if (!(g > cells.time))
+    {
+        why += std::string("; the rule's ") + Foam::name(allowed) + " s is no longer";
+        return cells.time;
+    }
+    why = std::string("the rule's ") + Foam::name(allowed) + " s in a whole number of fine steps"
+        + (g < most ? " that divides the writeInterval" : "");
+    return g;
+}
+
+
+void Foam::fluidCoarsener::coarsenControl
+(
+    const scalar growth,
+    const std::string& why
+) const
 {
     const fileName file(dir_/"system"/"controlDict");
     dictionary dict(caseFiles::readDict(file));
     const scalar deltaT = dict.get<scalar>("deltaT");
     dict.set("deltaT", deltaT*growth);
-    Info<< "    deltaT: " << deltaT << " -> " << deltaT*growth << " s (the narrowest cells "
-        << growth << " times wider at the same velocities: the fine case's Courant number)"
+    Info<< "    deltaT: " << deltaT << " -> " << deltaT*growth << " s (" << why.c_str() << ")"
         << nl;
     auto keepPeriod = [&](dictionary& d, const string& where)
     {
@@ -426,12 +461,22 @@ void Foam::fluidCoarsener::coarsenCoefficients
 }
 
 
-Foam::fluidCoarsener::meshGrowth Foam::fluidCoarsener::coarsen() const
+Foam::fluidCoarsener::meshGrowth Foam::fluidCoarsener::coarsen
+(
+    const fluidStepRule* rule,
+    const scalar couplingSteps
+) const
 {
     Info<< "The fluid coarsened with the parcels (factor " << h_ << "):" << nl;
     requireUniformFields();
-    const meshGrowth growth(coarsenBlocks());
-    coarsenControl(growth.time);
+    meshGrowth growth(coarsenBlocks());
+    std::string why
+    (
+        std::string("the narrowest cells ") + Foam::name(growth.time)
+      + " times wider at the same velocities: the fine case's Courant number"
+    );
+    if (rule) growth.time = stepGrowth(*rule, growth, couplingSteps, why);
+    coarsenControl(growth.time, why);
     coarsenLengths(growth.cellSize);
     return growth;
 }

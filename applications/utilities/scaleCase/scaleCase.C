@@ -48,7 +48,10 @@ Description
     c (h - 1) d, so that the parcels' looser layer at a wall holds the
     particles' solids, and keepVolumeBeyondMesh keeps the parcels' part
     beyond the mesh, with -wallVoid c (parcelWalls; c = 0.166 for beads at
-    a flat wall). Without it the walls stay.
+    a flat wall). Without it the walls stay. -courant Co sets the coarse
+    fluid step and coupling time by the coarse bed's needs instead of the
+    fine case's Courant number: Co on the coarse cells and a tenth of the
+    parcels' drag response time (fluidStepRule), where that is longer.
 
 Usage
     scaleCase -factor 2 -output ../bed-h2
@@ -56,6 +59,7 @@ Usage
     scaleCase -factor 2 -parcels cubic -keepMesh -output ../bed-parcels-fine
     scaleCase -factor 4 -parcels cubic -minCells '(z 12 0.042)' -output ../bed-h4
     scaleCase -factor 3 -parcels cubic -wallVoid 0.166 -output ../bed-h3-walls
+    scaleCase -factor 4 -parcels cubic -minCells '(z 12 0.042)' -courant 0.5 -output ../bed-h4-step
 
 \*---------------------------------------------------------------------------*/
 
@@ -128,6 +132,15 @@ int main(int argc, char *argv[])
         " c (h - 1) d, c the particles' extra void at a wall per wall area in"
         " diameters (0.166: beads at a flat wall); without, they stay"
     );
+    argList::addOption
+    (
+        "courant", "Co",
+        "with -parcels and a coarsened fluid: the fluid step the coarse bed"
+        " needs, the Courant number Co on its cells (the gas's speed bounded by"
+        " the inlet's through the densest packing) and the coupling time at"
+        " most a tenth of the parcels' drag response time; without, the fine"
+        " case's Courant number"
+    );
     argList::addBoolOption
     (
         "relativeSmoothing",
@@ -152,7 +165,15 @@ int main(int argc, char *argv[])
             << "-wallVoid " << wallVoid << ": must lie in [0, 0.5) particle diameters"
             << exit(FatalError);
     }
-    for (const word option : {"minCells", "relativeSmoothing"})
+    const scalar courant =
+        args.found("courant") ? finiteOption(args, "courant") : scalar(0);
+    if (args.found("courant") && !(courant > 0 && courant <= 1))
+    {
+        // PISO's pressure-velocity coupling asks for Co below 1
+        FatalErrorInFunction
+            << "-courant " << courant << ": must lie in (0, 1]" << exit(FatalError);
+    }
+    for (const word option : {"minCells", "relativeSmoothing", "courant"})
     {
         if (args.found(option) && (!args.found("parcels") || args.found("keepMesh")))
         {
@@ -238,7 +259,8 @@ int main(int argc, char *argv[])
               ? fluidCoarsener::readMinCells(args["minCells"], "minCells")
               : List<fluidCoarsener::minCellRule>(),
             args.found("relativeSmoothing"),
-            wallVoid
+            wallVoid,
+            courant
         );
     }
     else

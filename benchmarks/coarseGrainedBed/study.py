@@ -11,9 +11,10 @@ Each coarse system is `scaleCase -factor h -parcels <law>` of it: parcels of
 h^3 beads, the drag scaled by h^3 (cubic) or h^2 (exact), with --mesh fine
 (-keepMesh: the fine bed's mesh and steps), --mesh coarsened (cells,
 fluid and coupling steps coarsened by h, the smoothing relative to the
-cells: -relativeSmoothing) or --mesh bed (coarsened by at most h, at least
+cells: -relativeSmoothing), --mesh bed (coarsened by at most h, at least
 12 cells across the settled bed's height, the smoothing in metres:
--minCells).
+-minCells) or --mesh bedCo (as bed, the fluid and coupling steps by the
+coarse bed's needs: -courant, --courant Co; the runs' mesh is named bedCo<Co>).
 Each run packs its bed with LIGGGHTS, runs pimpleDEMFoam on --ranks ranks
 and records:
   - bubbling (inlet 1 m/s, END s): the pressure drop averaged over
@@ -38,11 +39,13 @@ cell layers) and the speed-up in wall-clock time per simulated second.
 table) for where the bed's weight rests over t > SETTLE s: the gas's
 vertical force on the particles (the solver's log), the distributor's and
 the side walls' contact forces (DEM/post/wallForces.txt); --report writes
-them to shares.md.
+them to shares.md. --profile makes bubbling runs of their own
+(results/<bed>/profile/) that record where the wall-clock time goes (the
+solver's stage timings); --report writes them to profile.md.
 
-usage: study.py [--bed tutorial|wide] [--mesh fine|coarsened|bed] [--ranks 1]
+usage: study.py [--bed tutorial|wide] [--mesh fine|coarsened|bed|bedCo] [--courant 0.5] [--ranks 1]
                 [--models analytical,kernel,centroid] [--factors 1,1.5,2,3]
-                [--laws cubic,exact] [--end 2.0] [--ramp | --shares] [--jobs 2]
+                [--laws cubic,exact] [--end 2.0] [--ramp | --shares | --profile] [--jobs 2]
                 [--report] [--results DIR]
 """
 import argparse
@@ -83,6 +86,9 @@ BEDS = {"tutorial": dict(width=48, depth=6, count=10000, NX=16, NY=2),
 MESH_Z = dict(NZ=40, NZP=2)
 # --mesh bed: at least 12 cells across the settled bed's 42 mm (both beds' fine height)
 BED_MIN_CELLS = "(z 12 0.042)"
+# --mesh bedCo: scaleCase's Courant number on the coarse cells (the gas's speed bounded by the
+# inlet's through the densest packing), by default
+COURANT = 0.5
 OUTPUTS = shutil.ignore_patterns("[1-9]*", "0.[0-9]*", "0", "postProcessing", "VTK", "log.*", "parcels_h*",
                                  "stress", "processor*", "*.png", "*.result", "post")
 
@@ -147,7 +153,9 @@ def make_case(case, source, model, h, law, ramp, end, mesh, ranks):
         shutil.copytree(source, case, ignore=OUTPUTS)
     else:
         mesh_options = {"fine": " -keepMesh", "coarsened": " -relativeSmoothing",
-                        "bed": " -minCells '%s'" % BED_MIN_CELLS}[mesh]
+                        "bed": " -minCells '%s'" % BED_MIN_CELLS}.get(mesh)
+        if mesh.startswith("bedCo"):
+            mesh_options = " -minCells '%s' -courant %s" % (BED_MIN_CELLS, mesh[len("bedCo"):])
         shell("scaleCase -factor %g -parcels %s%s -output %s -overwrite"
               % (h, law, mesh_options, case), source,
               os.path.join(os.path.dirname(case), "log.scaleCase." + os.path.basename(case)))
@@ -210,10 +218,30 @@ def run_one(model, h, law, ramp, end, results, bed="tutorial", mesh="fine", rank
     result = dict(name=name, model=model, h=h, law=law if h != 1 else "fine", ramp=ramp, bed=bed,
                   mesh=mesh if h != 1 else "fine", ranks=ranks, end=end, wall_per_s=wall / end)
     result.update(analyse_ramp(case) if ramp else analyse_bubbling(case))
+    result["stages"] = stage_seconds(case, end)
+    result["deltaT"] = float(re.search(r"(?m)^deltaT\s+(\S+);",
+                                       open(os.path.join(case, "system", "controlDict")).read()).group(1))
     os.makedirs(os.path.join(results, store), exist_ok=True)
     with open(os.path.join(results, store, name + ".json"), "w") as f:
         json.dump(result, f, indent=1)
     return result
+
+
+STAGES = ("DEM", "exchange", "voidFraction", "forces", "fluid")
+
+
+def stage_seconds(case, end):
+    """wall seconds per simulated second of each stage the solver's coupling
+    lines time, and of the coupling loop as a whole ("coupling")"""
+    pattern = re.compile(r"seconds " + " ".join(r"%s (\S+)" % s for s in STAGES)
+                         + r";.*wall seconds since the last coupling (\S+)")
+    sums = [0.0] * (len(STAGES) + 1)
+    with open(os.path.join(case, "log.pimpleDEMFoam"), errors="replace") as f:
+        for line in f:
+            m = pattern.search(line)
+            if m:
+                sums = [a + float(b) for a, b in zip(sums, m.groups())]
+    return dict(zip(STAGES + ("coupling",), (x / end for x in sums)))
 
 
 def analyse_bubbling(case):
@@ -369,6 +397,7 @@ def report(results):
         plot(runs, umf_ref, where)
         summary += summary_rows(rows, bed)
         write_shares(finished(where, "shares"), where)
+        write_profile(finished(where, "profile"), where)
     if not summary:
         sys.exit("study.py: no finished runs in %s" % os.path.join(results, "runs"))
     with open(os.path.join(results, "summary.csv"), "w") as f:
@@ -440,6 +469,30 @@ def write_shares(runs, where):
             f.write(shares_text(runs))
 
 
+def write_profile(runs, where):
+    """profile.md of a bed: where the time of its --profile runs goes"""
+    if runs:
+        with open(os.path.join(where, "profile.md"), "w") as f:
+            f.write(profile_text(runs))
+
+
+def profile_text(runs):
+    """per run: the fluid step, the wall seconds per simulated second and the
+    share of each stage in them (the rest: start-up, output, Info)"""
+    lines = ["| model | h | mesh | fluid step (s) | s per simulated s | " + " | ".join(STAGES)
+             + " | rest | speed-up vs bed |", "|---" * (6 + len(STAGES)) + "|"]
+    base = {(r["model"], r["h"]): r["wall_per_s"] for r in runs.values() if r["mesh"] == "bed"}
+    for r in sorted(runs.values(), key=lambda r: (r["model"], r["h"], r["deltaT"])):
+        st = r["stages"]
+        shares = ["%.0f %%" % (100 * st[s] / r["wall_per_s"]) for s in STAGES]
+        rest = 1 - sum(st[s] for s in STAGES) / r["wall_per_s"]
+        ref = base.get((r["model"], r["h"]))
+        lines.append("| %s | %g | %s | %g | %.1f | %s | %.0f %% | %s |"
+                     % (r["model"], r["h"], r["mesh"], r["deltaT"], r["wall_per_s"], " | ".join(shares),
+                        100 * rest, "%.2f" % (ref / r["wall_per_s"]) if ref else ""))
+    return "\n".join(lines) + "\n"
+
+
 def shares_text(runs):
     lines = ["| model | h | mesh | gas (solver's force) | distributor (contacts) | side walls (contacts) | sum "
              "| dp / bed weight |", "|---" * 8 + "|"]
@@ -462,6 +515,8 @@ def label(r):
     if r["h"] == 1:
         return "fine"
     mesh = {"coarsened": "coarsened", "bed": "bed's cells"}.get(r.get("mesh"), "fine mesh")
+    if r.get("mesh", "").startswith("bedCo"):
+        mesh = "bed's cells, Co %s" % r["mesh"][len("bedCo"):]
     return "h = %g %s, %s" % (r["h"], r["law"], mesh)
 
 
@@ -511,10 +566,11 @@ def plot(runs, umf_ref, where):
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--bed", choices=sorted(BEDS), default="tutorial")
-    p.add_argument("--mesh", choices=("fine", "coarsened", "bed"), default="fine",
+    p.add_argument("--mesh", choices=("fine", "coarsened", "bed", "bedCo"), default="fine",
                    help="the coarse runs on the fine bed's mesh (-keepMesh), on the mesh coarsened by h with "
                    "the smoothing relative to the cells, or (bed) coarsened by at most h keeping "
-                   + BED_MIN_CELLS + " and the smoothing in metres")
+                   + BED_MIN_CELLS + " and the smoothing in metres, bedCo: as bed with the steps by -courant (--courant)")
+    p.add_argument("--courant", type=float, default=COURANT, help="the Courant number of --mesh bedCo")
     p.add_argument("--ranks", type=int, default=1)
     p.add_argument("--models", default="analytical,kernel,centroid")
     p.add_argument("--factors", default="1,1.5,2,3")
@@ -522,6 +578,9 @@ def main():
     p.add_argument("--end", type=float, default=2.0)
     p.add_argument("--ramp", action="store_true")
     p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--profile", action="store_true",
+                   help="bubbling runs apart from the table's (results/<bed>/profile/), one after another, for "
+                   "where the time goes (profile.md)")
     p.add_argument("--shares", action="store_true",
                    help="bubbling runs apart from the table's (results/<bed>/shares/) for where the weight rests: "
                    "the gas, the distributor and the side walls (shares.md)")
@@ -539,10 +598,16 @@ def main():
     end = RAMP_END if a.ramp else a.end
     if not end > SETTLE:
         sys.exit("study.py: --end must exceed the start-up of %g s that the averages leave out" % SETTLE)
+    if a.mesh == "bedCo":
+        if not 0 < a.courant <= 1:
+            sys.exit("study.py: --courant must lie in (0, 1]")
+        a.mesh = "bedCo%g" % a.courant
     where, work = bed_dirs(a.bed, a.results)
-    store = "shares" if a.shares else "runs"
-    if a.shares and a.ramp:
-        sys.exit("study.py: --shares records bubbling runs, not a ramp")
+    store = "shares" if a.shares else "profile" if a.profile else "runs"
+    if (a.shares or a.profile) and a.ramp:
+        sys.exit("study.py: --shares and --profile record bubbling runs, not a ramp")
+    if a.shares and a.profile:
+        sys.exit("study.py: --shares or --profile, not both")
     done = finished(where, store)
     todo = []
     for model in a.models.split(","):

@@ -6,6 +6,7 @@ times divided by h, velocities and kinematic pressures as they are. Every
 term of the coupling (void fraction, drag, pressure gradient, buoyancy,
 the implicit drag, the DEM's Hertz contacts and gravity) has to scale for
 this to hold. h = 2 is exact in binary floating point; h = 3 is not."""
+import math
 import os
 import re
 import shutil
@@ -539,6 +540,16 @@ def test_step_rule():
     rc, text, got = scale("-courant 0.5", case + "-exact", law="exact")
     m = re.search(r"drag response time there: (\S+) s", text)
     near("-courant, exact law: the response time 2 tau", float(m.group(1)) if m else None, 2*tau, 1e-5*tau)
+    # the case's own law: Beetstra's force written from the paper (tests/dragLaws.py), tau = m u/F
+    import dragLaws
+    props = os.path.join(case, "constant", "couplingProperties")
+    edit(props, r"drag\s*\{ model Gidaspow; \}", "drag { model Beetstra; }")
+    rc, text, got = scale("-courant 0.5", case + "-beetstra")
+    m = re.search(r"drag response time there: (\S+) s \(Beetstra", text)
+    u = 1/0.36
+    near("-courant, Beetstra's law: tau = rho_p V u/F(0.36, 2.78 m/s) (6 digits)", float(m.group(1)) if m else None,
+         2500*math.pi*1e-9/6*u/dragLaws.force_beetstra(1e-3, 0.36, u, 1.2, 1.8e-5), 2e-5*tau)
+    edit(props, r"drag \{ model Beetstra; \}", "drag { model Gidaspow; }")
     # a faster inlet (fixedValue 2 m/s): 5.5556 m/s, 2.7e-4 s -> 2 fine steps (1000 % 2 = 0)
     edit(os.path.join(case, "0.orig", "U"), r"type\s+uniformFixedValue;\s*uniformValue\s+table\s*\(.*\);",
          "type fixedValue; value uniform (0 0 2);")

@@ -11,6 +11,9 @@
 #include "vector.H"
 #include "error.H"
 #include "OSspecific.H"
+#include "particleForceList.H"
+#include "dragModel.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -48,13 +51,26 @@ Foam::fluidStepRule::fluidStepRule
     const dictionary gas(caseFiles::readDict(transport));
     const scalar rho = gas.get<scalar>("rho");
     const scalar mu = gas.get<scalar>("nu")*rho;
-    responseTime_ = slower*responseTime(diameter, density, rho, mu, gasSpeed_);
+    // the case's own drag law, as the solver reads it
+    const dictionary coupling(caseFiles::readDict(dir/"constant"/"couplingProperties"));
+    dictionary shortForm;
+    const dictionary& drag =
+        particleForceList::forcesDict(coupling, shortForm).subDict("drag");
+    const autoPtr<dragModel> law(dragModel::New(drag, "model"));
+    dragModel::particleState p;
+    p.d = diameter;
+    p.Vp = constant::mathematical::pi*pow3(diameter)/6;
+    p.alpha = packedVoidFraction;
+    p.magUr = gasSpeed_;
+    p.rho = rho;
+    p.mu = mu;
+    responseTime_ = slower*density*p.Vp/law->beta(p);
     Info<< "    the gas's speed: at most " << gasSpeed_ << " m/s (the inlet's " << inlet
         << " m/s through the densest packing, void fraction " << packedVoidFraction << ")" << nl
-        << "    the parcels' drag response time there: " << responseTime_ << " s (Ergun, "
-        << "particles of " << diameter << " m, " << density << " kg/m^3, gas " << rho
-        << " kg/m^3, " << mu << " Pa s" << (slower > 1 ? ", times h for the exact law)" : ")")
-        << nl;
+        << "    the parcels' drag response time there: " << responseTime_ << " s ("
+        << drag.get<word>("model") << ", particles of " << diameter << " m, " << density
+        << " kg/m^3, gas " << rho << " kg/m^3, " << mu << " Pa s"
+        << (slower > 1 ? ", times h for the exact law)" : ")") << nl;
 }
 
 
@@ -96,21 +112,6 @@ Foam::scalar Foam::fluidStepRule::inletSpeed(const fileName& file)
         }
     }
     return fastest;
-}
-
-
-Foam::scalar Foam::fluidStepRule::responseTime
-(
-    const scalar diameter,
-    const scalar density,
-    const scalar gasDensity,
-    const scalar viscosity,
-    const scalar speed
-)
-{
-    const scalar e = packedVoidFraction;
-    return density
-       /(150*(1 - e)*viscosity/(e*sqr(diameter)) + 1.75*gasDensity*speed/diameter);
 }
 
 

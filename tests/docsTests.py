@@ -16,7 +16,7 @@ import sys
 import numpy as np
 
 import checks
-from checks import check
+from checks import check, near
 from foamCase import ROOT
 
 LINK = re.compile(r"\]\(([^)\s]+)\)")
@@ -362,12 +362,32 @@ def test_heated_bed_table():
           len(rows) == 4 and not wrong, "(rows at %s differ)" % wrong)
 
 
+def test_cylinder_parcels_table():
+    print("the cylinder bed's parcels: cylinderParcels.md written from its runs' records")
+    sys.path.insert(0, os.path.join(ROOT, "benchmarks"))
+    import cylinderParcels
+    # the slab split: a sphere of radius 1 centred at 0.5 across [0, 2] keeps all but the cap
+    # beyond -0.5, pi h^2 (3R - h)/3 with h = 0.5: 1 - 0.15625; [0, 0.5] holds 0.34375
+    shares = cylinderParcels.slab_share(0.5, 1.0, np.array([0, 0.5, 1, 1.5, 2]))
+    near("slab split: the sphere's share inside [0, 2]", float(shares.sum()), 1 - 0.15625, 1e-12)
+    near("slab split: its share in [0, 0.5]", float(shares[0]), 0.34375, 1e-12)
+    runs = cylinderParcels.finished()
+    check("cylinder runs recorded: the beads and h = 2, 3 with the walls as they are and moved",
+          {"beads", "h2_as", "h2_moved", "h3_as", "h3_moved"} <= set(runs), "(%s)" % sorted(runs))
+    if "beads" not in runs:
+        return
+    table = open(os.path.join(ROOT, "benchmarks", "cylinderParcels", "cylinderParcels.md")).read()
+    check("cylinderParcels.md is its runs' table", cylinderParcels.table_text(runs) == table)
+    runs["beads"]["mean_solids"] += 0.001
+    check("a changed record is caught", cylinderParcels.table_text(runs) != table)
+
+
 def main():
     checks.run([test_links, test_readme_numbers_in_linked_sections, test_result_tables, test_coarse_bed_tables_from_runs,
                 test_study_tables_from_csv, test_compression_tables_from_csv,
                 test_spouted_bed_summary_from_results, test_spouted_bed_against_fine, test_spouted_bed_walls,
                 test_spouted_bed_closures,
-                test_heated_bed_table],
+                test_heated_bed_table, test_cylinder_parcels_table],
                sys.argv[1:])
     return checks.summary("docs")
 

@@ -12,12 +12,16 @@ Changes (one each, everything else the tutorial's):
   Beetstra   Beetstra, van der Hoef and Kuipers' (2007) drag
   gasLethe   air of density 1.0 kg/m3 and viscosity 1.81e-5 Pa s (the
              published Lethe example's) instead of 1.205 kg/m3, 1.5e-5 m2/s
-A run stopped by anything continues from its last written time when this is
-started again; a recorded change (results/closures/<change>/) is not run
-again unless --rerecord.
+--factor 1 runs the beads themselves with a change (recorded as
+<change>_h1, about 3,000 s of wall-clock time per simulated second on 2
+ranks). A run stopped by anything continues from its last written time when
+this is started again; a recorded change (results/closures/<change>/) is not
+run again unless --rerecord. --save keeps the runs' last written times in
+carried/closure_<change>.tar.xz (carry.py), from where a machine without the
+run's folder continues it.
 
 usage: closures.py [--changes DiFelice,Beetstra,gasLethe] [--end 5] [--ranks 2]
-                   [--rerecord]
+                   [--factor 1.6] [--rerecord] [--save]
        closures.py --drag-ratios    Di Felice's and Beetstra's drag over
                    Gidaspow's at the bed's void fractions and Reynolds numbers
                    (results/dragRatios.md)
@@ -28,9 +32,9 @@ import re
 import subprocess
 import sys
 
-from carry import latest_time
+from carry import latest_time, restore, save
 from record import wall_seconds
-from run import ENV, WORK, copy_tutorial, reached, stretch
+from run import CARRIED, ENV, WORK, copy_tutorial, reached, stretch
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "tests"))
@@ -57,26 +61,39 @@ CHANGES = {
 }
 
 
+def places(change, a):
+    """the change's name, run folder, results folder and carried archive"""
+    name = change if a.factor == FACTOR else "%s_h%g" % (change, a.factor)
+    top = os.path.join(WORK, "closure_%s" % name)
+    case = os.path.join(top, "fine" if a.factor == 1 else "parcels_h%g" % a.factor)
+    return name, top, case, os.path.join(RESULTS, name), os.path.join(CARRIED, "closure_%s.tar.xz" % name)
+
+
 def run_change(change, a):
-    top = os.path.join(WORK, "closure_%s" % change)
-    case = os.path.join(top, "parcels_h%g" % FACTOR)
-    where = os.path.join(RESULTS, change)
+    name, top, case, where, carried = places(change, a)
     if os.path.isdir(where) and not a.rerecord:
         print("%s: recorded earlier in %s" % (change, os.path.relpath(where, HERE)))
         return
+    if latest_time(case) == 0.0 and os.path.isfile(carried):
+        copy_tutorial(top)
+        print("%s: continuing the run saved in %s" % (name, os.path.relpath(carried, HERE)), flush=True)
+        restore(carried, case)
     if latest_time(case) == 0.0:
         copy_tutorial(top)
         for path, key, value in CHANGES[change]:
             set_entry(os.path.join(top, path), key, value)
-        print("%s: setting up and running %g s at h = %g" % (change, a.end, FACTOR), flush=True)
-        subprocess.run(["./Allrun", "%g" % FACTOR, MODEL, "%g" % a.end, str(a.ranks)], cwd=top, env=ENV,
+        print("%s: setting up and running %g s at h = %g" % (change, a.end, a.factor), flush=True)
+        subprocess.run(["./Allrun", "%g" % a.factor, MODEL, "%g" % a.end, str(a.ranks)], cwd=top, env=ENV,
                        check=True)
     elif not reached(case, a.end):
         print("%s: continuing from t = %g s" % (change, latest_time(case)), flush=True)
         stretch(case, a.ranks)
     wall, simulated = wall_seconds(case)
-    subprocess.run(["/usr/bin/python3", os.path.join(HERE, "closureStatistics.py"), case, where, change,
+    subprocess.run(["/usr/bin/python3", os.path.join(HERE, "closureStatistics.py"), case, where, name,
                     "%.1f" % (wall/max(simulated, 1e-9))], env=ENV, check=True)
+    if os.path.isfile(carried):
+        os.remove(carried)
+        print("%s: recorded; removed %s (git rm it)" % (name, os.path.relpath(carried, HERE)))
 
 
 def drag_ratios():
@@ -105,13 +122,23 @@ def main():
     p.add_argument("--changes", default=",".join(CHANGES))
     p.add_argument("--end", type=float, default=5.0)
     p.add_argument("--ranks", type=int, default=2)
+    p.add_argument("--factor", type=float, default=FACTOR)
     p.add_argument("--rerecord", action="store_true")
+    p.add_argument("--save", action="store_true")
     a = p.parse_args()
     changes = a.changes.split(",")
     unknown = [c for c in changes if c not in CHANGES]
-    if unknown or a.end <= 2 or a.ranks < 1:
-        sys.exit("closures.py: changes are %s (not %s); --end must exceed 2 s, --ranks be positive"
+    if unknown or a.end <= 2 or a.ranks < 1 or a.factor < 1:
+        sys.exit("closures.py: changes are %s (not %s); --end must exceed 2 s, --ranks be positive, --factor >= 1"
                  % (", ".join(CHANGES), ", ".join(unknown) or "-"))
+    if a.save:
+        os.makedirs(CARRIED, exist_ok=True)
+        for change in changes:
+            name, _, case, _, carried = places(change, a)
+            if latest_time(case) > 0.0:
+                save(case, carried)
+                print("%s: saved t = %g s in %s" % (name, latest_time(case), os.path.relpath(carried, HERE)))
+        return
     os.makedirs(WORK, exist_ok=True)
     for i, change in enumerate(changes):
         print("== change %d of %d: %s" % (i + 1, len(changes), change), flush=True)

@@ -382,12 +382,48 @@ def test_cylinder_parcels_table():
     check("a changed record is caught", cylinderParcels.table_text(runs) != table)
 
 
+def test_spouted_bed_minimum_spouting():
+    print("the spouted bed's minimum spouting velocity and pressure drop against the classic results")
+    here = os.path.join(ROOT, "benchmarks", "spoutedBed")
+    sys.path.insert(0, here)
+    import json
+    import minimumSpouting as ms
+    record = json.load(open(os.path.join(here, "results", "minimumSpouting.json")))
+    # Mathur and Gishler (1955) in closed form: 2.5 mm glass (2500 kg/m3) in air (1.205 kg/m3),
+    # H = 0.2 m; the 280 x 40 mm bed and its 24 x 40 mm channel as circles of equal area and by
+    # their hydraulic diameters (4 A / perimeter)
+    lift = np.sqrt(2*9.81*0.2*(2500 - 1.205)/1.205)
+    for key, column, inlet in (("area", np.sqrt(0.0112*4/np.pi), np.sqrt(0.00096*4/np.pi)),
+                               ("hydraulic", 4*0.0112/0.64, 4*0.00096/0.128)):
+        near("Mathur-Gishler U_ms, %s diameters (m/s)" % key, record["ums_mathur_gishler_%s_m_s" % key],
+             0.0025/column*(inlet/column)**(1/3)*lift, 1e-9)
+    # Mamuro and Hattori: the annulus's gradient follows U_a/U_mf = 1 - (1 - z/H_m)^3, its
+    # integral over the height by the trapezoidal rule; Lefroy and Davidson: a cosine profile
+    z = np.linspace(0, 1, 100001)
+    near("Mamuro-Hattori's ratio at H_m is the integral of 1 - (1 - z)^3",
+         record["dp_ratio_mamuro_hattori_at_Hm"], float(np.trapz(1 - (1 - z)**3, z)), 1e-8)
+    near("Lefroy-Davidson's ratio is the integral of sin(pi z / 2) over [0, 1]", record["dp_ratio_lefroy_davidson"],
+         float(np.trapz(np.sin(np.pi*z/2), z)), 1e-8)
+    # the simulated U_ms: the channel's velocity, held at 20.8 m/s to the hold and lowered linearly
+    # after it, at the first snapshot after which the fountain stays under 20 mm above the packed bed
+    snaps = np.array(record["snapshots"])
+    after = np.nonzero((snaps[:, 1] >= 0.02) & (snaps[:, 0] > record["hold_s"]))[0]
+    collapse = snaps[after[-1] + 1, 0]
+    channel = 20.8 + (record["low_m_s"] - 20.8)*(collapse - record["hold_s"])/(record["end_s"] - record["hold_s"])
+    near("the collapse's time (s)", record["collapse_s"], collapse, 1e-12)
+    near("U_ms: the channel's velocity then, over the width (m/s)", record["ums_m_s"], channel*24/280, 1e-9)
+    table = open(os.path.join(here, "results", "minimumSpouting.md")).read()
+    check("minimumSpouting.md is its record's table", ms.table_text(record) == table)
+    record["ums_m_s"] += 0.001
+    check("a changed record is caught", ms.table_text(record) != table)
+
+
 def main():
     checks.run([test_links, test_readme_numbers_in_linked_sections, test_result_tables, test_coarse_bed_tables_from_runs,
                 test_study_tables_from_csv, test_compression_tables_from_csv,
                 test_spouted_bed_summary_from_results, test_spouted_bed_against_fine, test_spouted_bed_walls,
                 test_spouted_bed_closures,
-                test_heated_bed_table, test_cylinder_parcels_table],
+                test_spouted_bed_minimum_spouting, test_heated_bed_table, test_cylinder_parcels_table],
                sys.argv[1:])
     return checks.summary("docs")
 

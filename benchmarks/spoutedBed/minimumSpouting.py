@@ -187,6 +187,7 @@ def plot(c):
     a = argparse.Namespace(hold=c["hold_s"], end=c["end_s"], low=c["low_m_s"])
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
     s = np.array(c["snapshots"])
+    s = s[s[:, 0] > 0.5]        # after the spout's opening
     top.plot(superficial(channel_velocity(s[:, 0], a)), 1000*s[:, 1], "k.")
     top.axhline(1000*BREAKTHROUGH, color="grey", ls=":")
     top.set_ylabel("fountain over the packed surface (mm)")
